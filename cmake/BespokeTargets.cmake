@@ -1,0 +1,44 @@
+# Compiler settings shared by every Bespoke target, and helpers that keep the
+# per-folder CMakeLists.txt files short.
+
+add_library(bespoke_warnings INTERFACE)
+target_compile_options(bespoke_warnings INTERFACE -Wall -Wextra)
+if(BESPOKE_SANITIZE)
+  target_compile_options(bespoke_warnings INTERFACE
+    -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  target_link_options(bespoke_warnings INTERFACE -fsanitize=address,undefined)
+endif()
+
+set(BESPOKE_SHARED_DIR "${PROJECT_SOURCE_DIR}/../shared" CACHE PATH
+  "The ../shared folder with the thesis and test data (tests skip where it is absent)")
+
+# bespoke_add_library(NAME <name> SOURCES ... [PUBLIC_LIBS ...] [PRIVATE_LIBS ...])
+# One static library per top-level folder; headers are included as
+# "folder/sub/file.h" from the repository root.
+function(bespoke_add_library)
+  cmake_parse_arguments(ARG "" "NAME" "SOURCES;PUBLIC_LIBS;PRIVATE_LIBS" ${ARGN})
+  add_library(${ARG_NAME} STATIC ${ARG_SOURCES})
+  target_include_directories(${ARG_NAME} PUBLIC ${PROJECT_SOURCE_DIR})
+  target_link_libraries(${ARG_NAME} PUBLIC ${ARG_PUBLIC_LIBS} bespoke_warnings
+                                    PRIVATE ${ARG_PRIVATE_LIBS})
+endfunction()
+
+# bespoke_add_test(NAME <name> SOURCES ... LIBS ... [LABELS ...] [TIMEOUT s])
+# One GoogleTest binary per library; every TEST becomes a ctest test.
+# Labels: `shared` (reads ../shared, skips without it), `slow` (> 10 s).
+function(bespoke_add_test)
+  if(NOT BESPOKE_BUILD_TESTS)
+    return()
+  endif()
+  cmake_parse_arguments(ARG "" "NAME;TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
+  if(NOT ARG_TIMEOUT)
+    set(ARG_TIMEOUT 600)
+  endif()
+  add_executable(${ARG_NAME} ${ARG_SOURCES})
+  target_link_libraries(${ARG_NAME} PRIVATE ${ARG_LIBS} bespoke_test_support
+                                          GTest::gtest GTest::gmock GTest::gtest_main)
+  gtest_discover_tests(${ARG_NAME}
+    DISCOVERY_MODE PRE_TEST
+    WORKING_DIRECTORY ${PROJECT_BINARY_DIR}
+    PROPERTIES TIMEOUT ${ARG_TIMEOUT} LABELS "${ARG_LABELS}")
+endfunction()
