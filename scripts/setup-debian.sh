@@ -11,7 +11,7 @@ PACKAGES=(
   libpcl-dev libflann-dev libopen3d-dev libcgal-dev libeigen3-dev libopencv-dev
   # helpers
   libcli11-dev nlohmann-json3-dev libspdlog-dev libfmt-dev libtbb-dev libpagmo-dev
-  libcairo2-dev libboost-dev
+  libcairo2-dev fonts-dejavu-core libboost-dev
   # tests, benchmarks, fuzzing (libFuzzer ships with clang's runtime)
   libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
 )
