@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "scanners/core/types.h"
@@ -58,6 +59,9 @@ struct ReadReport {
   LengthUnit unit = LengthUnit::kMillimetre;  // unit the file was read in
   bool unit_guessed = false;                  // true when guessed from the extent
   Eigen::AlignedBox3d bounds_file_units;      // of the finite points, in file units
+  // Things skipped or repaired while reading (ignored trailing bytes, normals
+  // dropped because some were NaN, a mesh whose unit could not be guessed, ...).
+  std::vector<std::string> warnings;
 };
 
 struct Scan {
@@ -80,9 +84,19 @@ struct Mesh {
 
 // Reads a triangle mesh (OBJ, OFF, PLY with a face element, STL). Positions
 // stay in the file's units (meshes feed geometry tools that must not rescale
-// silently); report.unit is the guess. Throws InputError for malformed files
-// and for files without faces.
+// silently); report.unit is options.units or the guess (when no unit gives a
+// body-sized extent, e.g. the Stanford bunny, report.unit is mm, unit_guessed
+// is false and report.warnings says so). Throws InputError for malformed
+// files, files without faces and vertices with NaN/Inf coordinates.
+// min_finite_points does not apply to meshes.
 Mesh ReadMesh(const ReadOptions& options, const std::filesystem::path& file);
+
+// The same, from bytes already in memory (`file` names them in messages and
+// its extension is the fallback for the format). For fuzzing and streams.
+Scan ReadScanFromBytes(const ReadOptions& options, const std::filesystem::path& file,
+                       std::string_view bytes);
+Mesh ReadMeshFromBytes(const ReadOptions& options, const std::filesystem::path& file,
+                       std::string_view bytes);
 
 enum class PlyEncoding { kAscii, kBinaryLittleEndian, kBinaryBigEndian };
 enum class PcdEncoding { kAscii, kBinary, kBinaryCompressed };
