@@ -6,11 +6,20 @@ namespace bespoke {
 
 // One declaration and one table row per subcommand (pipeline/cmd_<name>.cc).
 CommandRunner SetupVersionCommand(CLI::App& app);
+CommandRunner SetupRunCommand(CLI::App& app);
+CommandRunner SetupBatchCommand(CLI::App& app);
+CommandRunner SetupBatchMergeCommand(CLI::App& app);
 
 const std::vector<Command>& AllCommands() {
   static const std::vector<Command> commands = {
       {"version", "Print the version and the libraries Bespoke was built with",
        &SetupVersionCommand},
+      {"run", "The whole job for one scan (clean, measure, fit a pattern) into one folder",
+       &SetupRunCommand},
+      {"batch", "Run every scan of a folder or manifest, each in its own worker process",
+       &SetupBatchCommand},
+      {"batch-merge", "Merge the shards of a batch (e.g. a Slurm job array) into one report",
+       &SetupBatchMergeCommand},
   };
   return commands;
 }

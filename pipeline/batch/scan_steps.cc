@@ -1,0 +1,71 @@
+// The single-scan job's steps. Each stage is wired in here as its library
+// lands; until then it is listed with the reason it is skipped.
+#include "pipeline/batch/scan_steps.h"
+
+#include <spdlog/spdlog.h>
+
+#include "scanners/core/json_io.h"
+#include "scanners/core/units.h"
+#include "scanners/io/scan_io.h"
+
+namespace bespoke {
+namespace {
+
+void Read(JobState& s) {
+  ReadOptions options;
+  if (!s.options->units.empty()) options.units = ParseLengthUnit(s.options->units);
+  Scan scan = ReadScan(options, s.scan_file);
+  const ReadReport& r = scan.report;
+  s.SetResult("file_format", ToString(r.format));
+  s.SetResult("file_unit", ToString(r.unit));
+  s.SetResult("points_in_file", r.points_in_file);
+  s.SetResult("non_finite_dropped", r.non_finite_dropped);
+  s.SetResult("points_read", static_cast<std::int64_t>(scan.cloud.size()));
+  nlohmann::json bounds = nullptr;
+  if (!r.bounds_file_units.isEmpty()) {
+    bounds = {{"min", ToJson(Eigen::Vector3d(r.bounds_file_units.min()))},
+              {"max", ToJson(Eigen::Vector3d(r.bounds_file_units.max()))}};
+  }
+  WriteJsonFile(s.out_dir / "input.json",
+                {{"file", r.file.string()}, {"format", ToString(r.format)}, {"encoding", r.encoding},
+                 {"fields", r.fields}, {"points_in_file", r.points_in_file},
+                 {"non_finite_dropped", r.non_finite_dropped}, {"faces_in_file", r.faces_in_file},
+                 {"file_unit", ToString(r.unit)}, {"unit_guessed", r.unit_guessed},
+                 {"bounds_file_units", bounds}});
+  s.AddOutput("input.json");
+  spdlog::info("read {}: {} points ({}, unit {}{})", s.scan_file.string(), scan.cloud.size(),
+               ToString(r.format), ToString(r.unit), r.unit_guessed ? ", guessed" : "");
+  s.scan_mm = std::move(scan.cloud);
+}
+
+const char* NeedsScan(const JobState& s) {
+  return s.scan_mm ? nullptr : "needs the scan (read step skipped)";
+}
+const char* NeedsBodyCloud(const JobState& s) {
+  return s.body_cloud ? nullptr : "needs the cleaned body-frame cloud (clean step skipped)";
+}
+const char* NeedsDesignAndMeasurements(const JobState& s) {
+  if (s.options->design.empty()) return "no --design given";
+  return s.measurements ? nullptr : "needs measurements (measure step skipped)";
+}
+
+}  // namespace
+
+void JobState::AddOutput(const std::string& relative) {
+  record->outputs.push_back(DescribeOutput(out_dir, relative));
+}
+
+const std::vector<ScanStep>& ScanSteps() {
+  static const std::vector<ScanStep> steps = {
+      {"read", &Read, nullptr, nullptr},
+      {"clean", nullptr, "cleaning and the body frame (measure/clean, issue 2) are not in this build yet",
+       &NeedsScan},
+      {"measure", nullptr, "landmarks and measurements (bespoke measure, issue 5) are not in this build yet",
+       &NeedsBodyCloud},
+      {"resize", nullptr, "pattern resizing (bespoke resize, issue 6) is not in this build yet",
+       &NeedsDesignAndMeasurements},
+  };
+  return steps;
+}
+
+}  // namespace bespoke
