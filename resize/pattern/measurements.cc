@@ -1,0 +1,76 @@
+#include "resize/pattern/measurements.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scanners/core/errors.h"
+#include "scanners/core/json_io.h"
+
+namespace bespoke {
+
+const std::vector<std::string>& CoreMeasurementNames() {
+  static const std::vector<std::string> names = {
+      "stature",        "neck_girth",      "bust_girth",     "chest_girth",   "under_bust_girth",
+      "waist_girth",    "middle_hip_girth", "hip_girth",     "upper_arm_girth", "wrist_girth",
+      "thigh_girth",    "knee_girth",      "calf_girth",     "ankle_girth",   "back_length",
+      "front_length",   "shoulder_length", "across_shoulder", "back_width",   "front_width",
+      "armhole_length", "arm_length",      "sleeve_length",  "waist_to_hip",  "crotch_length",
+      "inside_leg",     "outseam",         "waist_to_knee",  "waist_height"};
+  return names;
+}
+
+bool IsCoreMeasurement(const std::string& name) {
+  const auto& names = CoreMeasurementNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+MeasurementSet MeasurementsFromJson(const nlohmann::json& document, const std::string& what) {
+  if (!document.is_object() || !document.contains("measurements") ||
+      !document["measurements"].is_array())
+    throw InputError(what + ": not a measurement document (needs a \"measurements\" array)");
+  MeasurementSet values;
+  for (const auto& entry : document["measurements"]) {
+    if (!entry.is_object() || !entry.contains("name") || !entry["name"].is_string() ||
+        !entry.contains("value_mm") || !entry["value_mm"].is_number())
+      throw InputError(what + ": every measurement needs a string \"name\" and a number "
+                              "\"value_mm\"");
+    const std::string name = entry["name"].get<std::string>();
+    const double value = entry["value_mm"].get<double>();
+    if (!std::isfinite(value) || value <= 0)
+      throw InputError(what + ": measurement '" + name + "' has value " + std::to_string(value) +
+                       " mm (must be finite and positive)");
+    if (!values.emplace(name, value).second)
+      throw InputError(what + ": measurement '" + name + "' appears twice");
+  }
+  return values;
+}
+
+MeasurementSet ReadMeasurements(const std::filesystem::path& file) {
+  return MeasurementsFromJson(ReadJsonFile(file), file.string());
+}
+
+nlohmann::json MeasurementsToJson(const MeasurementSet& values) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& [name, value] : values) {
+    std::string kind = "length";
+    if (name.size() > 6 && name.compare(name.size() - 6, 6, "_girth") == 0) kind = "girth";
+    if (name == "stature" || name.find("_height") != std::string::npos) kind = "height";
+    list.push_back({{"name", name}, {"kind", kind}, {"value_mm", value}, {"flags", {}}});
+  }
+  return {{"format", "bespoke-measurements"}, {"version", 1}, {"units", "mm"},
+          {"frame", "body"}, {"measurements", list}};
+}
+
+void CheckBindingsAgainst(const Pattern& pattern, const MeasurementSet& values,
+                          const std::string& what, const std::string& where) {
+  for (const MeasurementBinding& b : pattern.bindings) {
+    if (!IsCoreMeasurement(b.measurement))
+      throw InputError(what + ": binding '" + b.id + "' uses unknown measurement '" +
+                       b.measurement + "' (bindings use the core names of docs/contracts.md)");
+    if (!values.count(b.measurement))
+      throw InputError(what + ": measurement '" + b.measurement + "' needed by binding '" + b.id +
+                       "' is missing from " + where);
+  }
+}
+
+}  // namespace bespoke
