@@ -12,6 +12,8 @@ PACKAGES=(
   # helpers
   libcli11-dev nlohmann-json3-dev libspdlog-dev libfmt-dev libtbb-dev libpagmo-dev
   libcairo2-dev fonts-dejavu-core libboost-dev
+  # PCD binary_compressed (LZF) in scanners/io
+  liblzf-dev
   # tests, benchmarks, fuzzing (libFuzzer ships with clang's runtime)
   libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
 )

@@ -56,7 +56,9 @@ bool LooksLikeBinaryStl(std::string_view bytes);
 std::string WritePly(const WriteOptions& options, const PointCloud& cloud,
                      const Eigen::MatrixX3i& faces);
 std::string WritePcd(const WriteOptions& options, const PointCloud& cloud);
-std::string WriteXyz(const WriteOptions& options, const PointCloud& cloud);
+// Text with a header line of names: "//x y z nx ..." (CloudCompare style,
+// space separated) or, with separator ',', a CSV header "x,y,z,...".
+std::string WriteXyz(const WriteOptions& options, const PointCloud& cloud, char separator);
 std::string WriteObj(const WriteOptions& options, const TriangleMesh& mesh);
 std::string WriteOff(const WriteOptions& options, const TriangleMesh& mesh);
 std::string WriteStl(const WriteOptions& options, const TriangleMesh& mesh);

@@ -254,7 +254,7 @@ void WriteScan(const WriteOptions& options, const PointCloud& cloud,
   } else if (ext == ".pcd") {
     contents = io::WritePcd(options, cloud);
   } else if (ext == ".xyz" || ext == ".txt" || ext == ".csv") {
-    contents = io::WriteXyz(options, cloud);
+    contents = io::WriteXyz(options, cloud, ext == ".csv" ? ',' : ' ');
   } else {
     throw InputError(file, "cannot write a point cloud as '" + ext + "': use .ply, .pcd or .xyz");
   }
