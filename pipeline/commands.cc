@@ -6,6 +6,7 @@ namespace bespoke {
 
 // One declaration and one table row per subcommand (pipeline/cmd_<name>.cc).
 CommandRunner SetupVersionCommand(CLI::App& app);
+CommandRunner SetupInfoCommand(CLI::App& app);
 CommandRunner SetupRunCommand(CLI::App& app);
 CommandRunner SetupBatchCommand(CLI::App& app);
 CommandRunner SetupBatchMergeCommand(CLI::App& app);
@@ -14,6 +15,8 @@ const std::vector<Command>& AllCommands() {
   static const std::vector<Command> commands = {
       {"version", "Print the version and the libraries Bespoke was built with",
        &SetupVersionCommand},
+      {"info", "Format, points, fields, bounds and length unit of a scan or mesh file",
+       &SetupInfoCommand},
       {"run", "The whole job for one scan (clean, measure, fit a pattern) into one folder",
        &SetupRunCommand},
       {"batch", "Run every scan of a folder or manifest, each in its own worker process",
