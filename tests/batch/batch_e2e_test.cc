@@ -1,0 +1,83 @@
+// The real worker: `bespoke run` on one scan, and `bespoke batch` over
+// generated scans mixed with malformed and hostile files (corpus.h). The
+// small, ctest-sized version of the 100-scan reliability run
+// (scripts/batch-reliability.sh, docs/batch.md).
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "pipeline/batch/done_record.h"
+#include "scanners/core/json_io.h"
+#include "tests/batch/batch_test_util.h"
+#include "tests/batch/corpus.h"
+#include "tests/support/test_support.h"
+
+namespace bespoke::testing {
+namespace {
+namespace fs = std::filesystem;
+
+TEST(BatchE2E, RunWritesEverythingAndDoneJsonLast) {
+  TempDir dir;
+  WriteSyntheticBodyScan({20000, 1700, 1.0, 1.0, 30, 7}, dir / "person.ply");
+  ASSERT_EQ(RunBespoke({"run", (dir / "person.ply").string(), "-o", (dir / "out").string()},
+                       dir / "log.txt"), 0) << ReadText(dir / "log.txt");
+  std::string problem;
+  const auto record = ReadValidDoneRecord(dir / "out", /*verify_hashes=*/true, &problem);
+  ASSERT_TRUE(record) << problem;
+  EXPECT_EQ(record->status, "ok");
+  EXPECT_EQ(record->scan_id, "person");
+  EXPECT_EQ(record->input_sha256, FileSha256(dir / "person.ply"));
+  EXPECT_EQ(record->results.value("file_unit", ""), "m");
+  EXPECT_FALSE(record->outputs.empty());
+  EXPECT_EQ(record->steps.front().value("name", ""), "read");
+  // done.json is the newest file of the folder.
+  const auto done_time = fs::last_write_time(dir / "out" / "done.json");
+  for (const OutputFile& f : record->outputs) {
+    EXPECT_LE(fs::last_write_time(dir / "out" / f.file), done_time) << f.file;
+  }
+  // A failing scan leaves a done.json that says so, and exit code 1.
+  WriteText(dir / "bad.ply", "ply\nformat ascii 1.0\nelement vertex 9\nend_header\n");
+  EXPECT_EQ(RunBespoke({"run", (dir / "bad.ply").string(), "-o", (dir / "out").string()},
+                       dir / "log2.txt"), 1);
+  const auto failed = ReadValidDoneRecord(dir / "out", true, &problem);
+  ASSERT_TRUE(failed) << problem;
+  EXPECT_EQ(failed->status, "failed");
+  EXPECT_EQ(failed->failure->kind, "input_error");
+  EXPECT_NE(failed->failure->message.find("bad.ply"), std::string::npos);
+}
+
+TEST(BatchE2E, GoodScansMeasuredHostileFilesListedWithReasons) {
+  TempDir dir;
+  const int good = 8;
+  fs::create_directories(dir / "in");
+  for (int k = 0; k < good; ++k) {
+    WriteSyntheticBodyScan({20000, 1600.0 + 25 * k, 0.9 + 0.03 * k, 1.0, 40.0 * k,
+                            static_cast<std::uint32_t>(k + 1)},
+                           dir / "in" / ("good_" + std::to_string(k) + ".ply"));
+  }
+  const std::vector<std::string> hostile = WriteHostileFiles(dir / "in", 3);
+  const int code = RunBespoke({"batch", (dir / "in").string(), "-o", (dir / "out").string(), "-j",
+                               "2", "--timeout-s", "120"}, dir / "log.txt");
+  EXPECT_EQ(code, 1) << ReadText(dir / "log.txt");  // bad input only: no crash, no time-out
+  const std::vector<std::string> rows = CsvRows(ReadText(dir / "out" / "summary.csv"));
+  EXPECT_EQ(rows.size(), good + hostile.size());
+  int ok = 0;
+  for (const std::string& r : rows) ok += r.find(",ok,") != std::string::npos ? 1 : 0;
+  EXPECT_EQ(ok, good) << ReadText(dir / "out" / "summary.csv");
+  const std::vector<std::string> failures = CsvRows(ReadText(dir / "out" / "failures.csv"));
+  EXPECT_EQ(failures.size(), hostile.size());
+  for (const std::string& f : failures) {
+    EXPECT_NE(f.find(",input_error,1,,"), std::string::npos) << f;
+    const std::string id = f.substr(0, f.find(','));
+    EXPECT_NE(f.find("/" + id + "."), std::string::npos) << "message names the file: " << f;
+  }
+  // A resume has nothing left to do and reproduces the same tables.
+  const std::string summary = ReadText(dir / "out" / "summary.csv");
+  EXPECT_EQ(RunBespoke({"batch", (dir / "in").string(), "-o", (dir / "out").string(), "--resume"},
+                       dir / "log2.txt"), 1);
+  EXPECT_NE(ReadText(dir / "log2.txt").find("0 to run"), std::string::npos) << ReadText(dir / "log2.txt");
+  EXPECT_EQ(ReadText(dir / "out" / "summary.csv"), summary);
+}
+
+}  // namespace
+}  // namespace bespoke::testing
