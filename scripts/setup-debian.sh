@@ -16,6 +16,8 @@ PACKAGES=(
   liblzf-dev
   # tests, benchmarks, fuzzing (libFuzzer ships with clang's runtime)
   libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
+  # batch: SHA-256 of outputs (done.json); the Slurm job-array test (scripts/slurm)
+  libssl-dev slurm-wlm munge
 )
 
 missing=()
