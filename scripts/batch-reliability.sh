@@ -50,7 +50,7 @@ echo "exit code $rc; rows $rows; ok $ok; failed $failed (input_error $input_erro
 cut -d, -f1,3,6- "$WORK/out/failures.csv" | sed "s|$WORK/in/||g" | cut -c1-150
 
 echo "== run 2: kill -9 after 30 scans, debris, --resume"
-"$BESPOKE" --quiet batch "$WORK/in" -o "$WORK/out2" --jobs "$JOBS" &
+"$BESPOKE" --quiet batch "$WORK/in" -o "$WORK/out2" --jobs "$JOBS" 2>/dev/null &
 pid=$!
 while [ "$(find "$WORK/out2" -mindepth 2 -maxdepth 2 -name done.json 2>/dev/null | wc -l)" -lt 30 ]; do
   kill -0 "$pid" 2>/dev/null || fail "the batch finished before it could be killed"
@@ -62,12 +62,13 @@ killed_at=$(find "$WORK/out2" -mindepth 2 -maxdepth 2 -name done.json | wc -l)
 sleep 1
 partial=$(for d in "$WORK"/out2/good_*/; do [ -f "$d/done.json" ] || echo "$d"; done | wc -l)
 echo "killed with $killed_at scans done; $partial planned scan folders without done.json"
-first_done=$(dirname "$(find "$WORK/out2" -mindepth 2 -maxdepth 2 -name done.json | sort | head -1)")
+done_good=$(find "$WORK/out2" -mindepth 2 -maxdepth 2 -path '*/good_*/done.json' | sort)
+first_done=$(dirname "$(echo "$done_good" | sed -n 1p)")
 echo '{"torn' > "$first_done/measurements.json.tmp-424242-0"
 echo 'scan_id,sta' > "$WORK/out2/summary.csv.tmp-424242-1"
 mkdir -p "$WORK/out2/good_089" && echo 'half' > "$WORK/out2/good_089/input.json"
-second_done=$(dirname "$(find "$WORK/out2" -mindepth 2 -maxdepth 2 -name done.json | sort | sed -n 2p)")
-out_file=$(ls "$second_done" | grep -v -e done.json -e run.log | head -1)
+second_done=$(dirname "$(echo "$done_good" | sed -n 2p)")
+out_file=$(ls "$second_done" | grep -v -e done.json -e run.log | sed -n 1p || true)
 echo '{}' > "$second_done/$out_file"   # damaged after done.json: must be redone
 set +e
 "$BESPOKE" --quiet batch "$WORK/in" -o "$WORK/out2" --jobs "$JOBS" --resume
