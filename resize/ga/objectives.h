@@ -1,0 +1,84 @@
+// The three objectives of thesis 4.2.4, evaluated for a gene vector, and the
+// residual vectors the final polish (polish.h) works on.
+//
+//  measurement (Eq 4.5): mean over bindings of |target - achieved| (mm), with
+//    target = body measurement + the binding's design ease.
+//  seam (Eq 4.6-4.8): per seam, (sum of |angle differences| at the paired
+//    inner seam points (deg) + sum of |edge length differences| of paired
+//    seam edges (mm)) / points, averaged over seams. Deviation: differences
+//    are taken relative to the base pattern (and the designed seam ease is
+//    spread over the edges), because two well-matched sides of a curved seam
+//    (sleeve head vs armhole) legitimately differ in angle and length.
+//  shape: mean |change of turning angle| over all outline vertices (deg);
+//    scale-invariant, so proportional grading has shape change 0.
+// Also reported: the largest binding error, the critical-point angle change
+// (the thesis's higher-level selection criterion) and the worst seam total
+// length mismatch.
+#ifndef BESPOKE_RESIZE_GA_OBJECTIVES_H_
+#define BESPOKE_RESIZE_GA_OBJECTIVES_H_
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "resize/ga/block.h"
+#include "resize/pattern/measurements.h"
+#include "resize/pattern/pattern.h"
+
+namespace bespoke {
+
+struct Objectives {
+  double measurement_mm = 0;      // Eq 4.5 (mean |error| over bindings)
+  double seam = 0;                // Eq 4.8 (mixed deg + mm per point)
+  double shape_deg = 0;           // mean |turning-angle change| over outline vertices
+  double max_measurement_mm = 0;  // largest |binding error|
+  double critical_shape_deg = 0;  // mean |turning-angle change| at critical points
+  double max_seam_length_mm = 0;  // largest |length(a) - length(b) - ease| over seams
+  bool simple = true;             // every outline free of self-intersections (final checks only)
+};
+
+// Everything fixed during one fit: the base pattern, its blocks, targets and
+// base angles. Evaluate() is thread-safe (it uses no shared mutable state).
+class FitnessModel {
+ public:
+  FitnessModel(const Pattern& base, const BlockSet& blocks, const MeasurementSet& body);
+
+  Objectives Evaluate(const Eigen::VectorXd& genes, bool check_simple = false) const;
+
+  // Per binding: target (mm) and achieved (mm) for `genes`.
+  std::vector<double> Targets() const { return targets_; }
+  std::vector<double> Achieved(const Eigen::VectorXd& genes) const;
+  // Per seam: length(a) - length(b) - ease (mm).
+  std::vector<double> SeamMismatch(const Eigen::VectorXd& genes) const;
+
+  // For the polish: hard constraints (binding errors, seam length
+  // mismatches; mm) and soft residuals (turning-angle changes at every outline
+  // vertex scaled by `angle_scale_mm` per radian, paired-edge differences in
+  // mm, paired seam-angle differences scaled likewise).
+  void Residuals(const Eigen::VectorXd& genes, double angle_scale_mm, Eigen::VectorXd* constraints,
+                 Eigen::VectorXd* soft) const;
+
+  const Pattern& base() const { return base_; }
+  const BlockSet& blocks() const { return blocks_; }
+
+ private:
+  struct SeamData {
+    int piece_a, piece_b;
+    std::vector<int> a, b;            // vertex indices in stitch order
+    std::vector<double> edge_target;  // target la_i - lb_i per edge (mm)
+    std::vector<double> angle_base;   // base turning(a) - turning(b) at inner points (rad)
+    double ease = 0;
+  };
+  void Outlines(const Eigen::VectorXd& genes, std::vector<Outline>* outlines) const;
+  double BindingAchieved(size_t b, const Eigen::VectorXd& genes,
+                         const std::vector<Outline>& outlines) const;
+
+  Pattern base_;
+  BlockSet blocks_;
+  std::vector<double> targets_;
+  std::vector<SeamData> seams_;
+  std::vector<Eigen::VectorXd> base_turning_;  // per piece, radians
+};
+
+}  // namespace bespoke
+
+#endif  // BESPOKE_RESIZE_GA_OBJECTIVES_H_

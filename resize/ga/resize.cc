@@ -1,0 +1,252 @@
+#include "resize/ga/resize.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <pagmo/utils/multi_objective.hpp>
+
+#include "resize/ga/grading.h"
+#include "resize/ga/operators.h"
+#include "resize/pattern/geometry.h"
+#include "scanners/core/errors.h"
+
+namespace bespoke {
+namespace {
+
+struct Individual {
+  Eigen::VectorXd genes;
+  Objectives objectives;
+  int age = 0;
+};
+
+using Population = std::vector<Individual>;
+
+pagmo::vector_double Point(const Objectives& o) {
+  return {o.measurement_mm, o.seam, o.shape_deg};
+}
+
+void EvaluateRange(const FitnessModel& model, Population* pop, size_t begin, size_t end) {
+  tbb::parallel_for(begin, end, [&](size_t i) {
+    (*pop)[i].objectives = model.Evaluate((*pop)[i].genes);
+  });
+}
+
+// Non-domination rank and crowding distance of every individual.
+struct Ranking {
+  std::vector<int> rank;
+  std::vector<double> crowding;
+};
+
+Ranking Rank(const Population& pop) {
+  std::vector<pagmo::vector_double> points;
+  for (const Individual& ind : pop) points.push_back(Point(ind.objectives));
+  const auto fronts = std::get<0>(pagmo::fast_non_dominated_sorting(points));
+  Ranking r;
+  r.rank.assign(pop.size(), 0);
+  r.crowding.assign(pop.size(), std::numeric_limits<double>::infinity());
+  for (size_t f = 0; f < fronts.size(); ++f) {
+    std::vector<pagmo::vector_double> front_points;
+    for (auto i : fronts[f]) {
+      r.rank[i] = static_cast<int>(f);
+      front_points.push_back(points[i]);
+    }
+    if (front_points.size() < 3) continue;  // pagmo needs 2+; ends are infinite anyway
+    const pagmo::vector_double cd = pagmo::crowding_distance(front_points);
+    for (size_t k = 0; k < fronts[f].size(); ++k) r.crowding[fronts[f][k]] = cd[k];
+  }
+  return r;
+}
+
+size_t Tournament(const Ranking& r, Rng& rng) {
+  std::uniform_int_distribution<size_t> pick(0, r.rank.size() - 1);
+  const size_t a = pick(rng), b = pick(rng);
+  if (r.rank[a] != r.rank[b]) return r.rank[a] < r.rank[b] ? a : b;
+  return r.crowding[a] >= r.crowding[b] ? a : b;
+}
+
+Eigen::VectorXd SeedGenes(const Pattern& base, const BlockSet& blocks,
+                          const std::vector<double>& scales) {
+  Eigen::VectorXd genes = blocks.base_genes;
+  for (size_t k = 0; k < blocks.blocks.size(); ++k) {
+    const Block& b = blocks.blocks[k];
+    const Outline& o = base.pieces[k].outline;
+    const Eigen::Vector2d centre =
+        0.5 * (o.colwise().minCoeff() + o.colwise().maxCoeff()).transpose();
+    for (int c = 0; c < b.nu * b.nv; ++c) {
+      Eigen::Ref<Eigen::VectorXd> xy = genes.segment(b.offset + 2 * c, 2);
+      xy = centre + scales[k] * (Eigen::Vector2d(xy) - centre);
+    }
+  }
+  return genes;
+}
+
+// The front member to answer with (thesis: least shape change on the front).
+// Deviation: only members whose bindings and seam lengths are all within the
+// tolerance qualify, and among them the least critical-point angle change
+// wins; when none qualifies, the least violation max(|binding error|, |seam
+// length mismatch|) wins. Outlines must be simple either way.
+size_t Pick(const FitnessModel& model, const Population& pop, const Ranking& r, double tol) {
+  size_t best = pop.size();
+  bool best_within = false;
+  auto violation = [](const Objectives& o) {
+    return std::max(o.max_measurement_mm, o.max_seam_length_mm);
+  };
+  for (size_t i = 0; i < pop.size(); ++i) {
+    if (r.rank[i] != 0 || !model.Evaluate(pop[i].genes, true).simple) continue;
+    const Objectives& o = pop[i].objectives;
+    const bool within = violation(o) <= tol;
+    if (best == pop.size() || (within && !best_within)) {
+      best = i;
+      best_within = within;
+      continue;
+    }
+    if (within != best_within) continue;
+    const Objectives& b = pop[best].objectives;
+    if (within ? o.critical_shape_deg < b.critical_shape_deg : violation(o) < violation(b))
+      best = i;
+  }
+  return best == pop.size() ? 0 : best;
+}
+
+void Age(const ResizeOptions& options, const BlockSet& blocks, const FitnessModel& model,
+         const MutationParams& mutation, Rng& rng, Population* pop) {
+  const Ranking r = Rank(*pop);
+  // Scalar cost for Eq 4.2: sum of the objectives normalised over the population.
+  Eigen::MatrixXd f(pop->size(), 3);
+  for (size_t i = 0; i < pop->size(); ++i) {
+    const auto p = Point((*pop)[i].objectives);
+    f.row(i) << p[0], p[1], p[2];
+  }
+  const Eigen::RowVector3d lo = f.colwise().minCoeff(), span =
+      (f.colwise().maxCoeff() - lo).cwiseMax(1e-12);
+  const Eigen::VectorXd cost = ((f.rowwise() - lo).array().rowwise() / span.array()).rowwise().sum();
+  std::vector<size_t> first;
+  for (size_t i = 0; i < pop->size(); ++i)
+    if (r.rank[i] == 0) first.push_back(i);
+  std::vector<size_t> reborn;
+  for (size_t i = 0; i < pop->size(); ++i) {
+    Individual& ind = (*pop)[i];
+    ++ind.age;
+    const double life = LifeSpan(cost[i], cost.minCoeff(), cost.maxCoeff(), cost.mean(),
+                                 options.life_min, options.life_max);
+    // Deviation: the first front never dies, or the best answer could be lost.
+    if (r.rank[i] == 0 || ind.age <= life) continue;
+    const size_t parent = first[std::uniform_int_distribution<size_t>(0, first.size() - 1)(rng)];
+    ind.genes = (*pop)[parent].genes;
+    NonUniformMutation(blocks, mutation, rng, &ind.genes);
+    ind.age = 0;
+    reborn.push_back(i);
+  }
+  tbb::parallel_for(size_t(0), reborn.size(), [&](size_t k) {
+    (*pop)[reborn[k]].objectives = model.Evaluate((*pop)[reborn[k]].genes);
+  });
+}
+
+}  // namespace
+
+void ResizeOptions::Check() const {
+  if (population < 8 || population % 2 != 0)
+    throw InputError("--population must be even and at least 8 (got " +
+                     std::to_string(population) + ")");
+  if (generations < 0) throw InputError("--generations must be >= 0");
+  if (crossover_rate < 0 || crossover_rate > 1 || mutation_rate < 0 || mutation_rate > 1)
+    throw InputError("crossover and mutation rates must be in [0, 1]");
+  if (!(mutation_range > 0) || noise_sigma_mm < 0 || !(life_min > 0) || life_max < life_min ||
+      !(tolerance_mm > 0) || !(min_gap_mm > 0))
+    throw InputError("resize options out of range");
+  polish_options.Check();
+}
+
+ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& base,
+                           const MeasurementSet& body, Progress* progress) {
+  options.Check();
+  ValidatePattern(base, "pattern '" + base.name + "'");
+  if (base.bindings.empty())
+    throw InputError("pattern '" + base.name + "' has no measurement bindings to fit");
+  CheckBindingsAgainst(base, body, "pattern '" + base.name + "'", "the measurements");
+  const auto start = std::chrono::steady_clock::now();
+  const BlockSet blocks = BuildBlocks(options.block_options, base);
+  const FitnessModel model(base, blocks, body);
+  ResizeResult result;
+  const std::vector<double> scales = ProportionalScales(base, body);
+  result.seed = ScalePieces(base, scales);
+  const Eigen::VectorXd seed = SeedGenes(base, blocks, scales);
+  result.seed_objectives = model.Evaluate(seed, true);
+
+  Rng rng(options.seed);
+  const size_t n = static_cast<size_t>(options.population);
+  Population pop(n);
+  for (size_t i = 0; i < n; ++i) {
+    pop[i].genes = seed;
+    if (i > 0) AddGaussianNoise(blocks, options.noise_sigma_mm, options.min_gap_mm, rng, &pop[i].genes);
+  }
+  EvaluateRange(model, &pop, 0, n);
+  ProgressBegin(progress, "evolving", options.generations);
+  MutationParams mutation;
+  mutation.max_generations = std::max(options.generations, 1);
+  mutation.exponent = options.mutation_exponent;
+  mutation.range_fraction = options.mutation_range;
+  mutation.min_gap_mm = options.min_gap_mm;
+  for (int gen = 0; gen < options.generations; ++gen) {
+    mutation.generation = gen;
+    const double mutation_rate = std::max(options.mutation_rate_min,
+                                          options.mutation_rate - options.mutation_rate_step * gen);
+    const Ranking ranking = Rank(pop);
+    Population next = pop;
+    next.resize(2 * n);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (size_t k = 0; k < n; k += 2) {
+      // Algorithm 7's parents an index interval apart: the mother by crowded
+      // tournament, the father delta places after her, delta random.
+      const size_t mother = Tournament(ranking, rng);
+      const size_t delta = std::uniform_int_distribution<size_t>(1, n / 4)(rng);
+      Individual& a = next[n + k];
+      Individual& b = next[n + k + 1];
+      a = Individual{pop[mother].genes, {}, 0};
+      b = Individual{pop[(mother + delta) % n].genes, {}, 0};
+      if (u(rng) < options.crossover_rate)
+        UniformCrossover(blocks, options.min_gap_mm, rng, &a.genes, &b.genes);
+      if (u(rng) < mutation_rate) NonUniformMutation(blocks, mutation, rng, &a.genes);
+      if (u(rng) < mutation_rate) NonUniformMutation(blocks, mutation, rng, &b.genes);
+    }
+    EvaluateRange(model, &next, n, 2 * n);
+    std::vector<pagmo::vector_double> points;
+    for (const Individual& ind : next) points.push_back(Point(ind.objectives));
+    const std::vector<pagmo::pop_size_t> keep = pagmo::select_best_N_mo(points, n);
+    for (size_t i = 0; i < n; ++i) pop[i] = std::move(next[keep[i]]);
+    Age(options, blocks, model, mutation, rng, &pop);
+    GenerationStats stats;
+    stats.generation = gen + 1;
+    stats.best_measurement_mm = stats.best_seam = stats.best_shape_deg =
+        std::numeric_limits<double>::infinity();
+    for (const Individual& ind : pop) {
+      stats.best_measurement_mm = std::min(stats.best_measurement_mm, ind.objectives.measurement_mm);
+      stats.best_seam = std::min(stats.best_seam, ind.objectives.seam);
+      stats.best_shape_deg = std::min(stats.best_shape_deg, ind.objectives.shape_deg);
+    }
+    result.history.push_back(stats);
+    ProgressUpdate(progress, gen + 1);
+  }
+  ProgressEnd(progress);
+  const Ranking ranking = Rank(pop);
+  for (size_t i = 0; i < n; ++i)
+    if (ranking.rank[i] == 0) result.front.push_back(pop[i].objectives);
+  if (!result.history.empty()) result.history.back().front_size = static_cast<int>(result.front.size());
+  Eigen::VectorXd genes = pop[Pick(model, pop, ranking, options.tolerance_mm)].genes;
+  result.ga_objectives = model.Evaluate(genes, true);
+  const auto ga_end = std::chrono::steady_clock::now();
+  result.ga_time_s = std::chrono::duration<double>(ga_end - start).count();
+  if (options.polish) result.polish = Polish(options.polish_options, model, &genes);
+  result.polish_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - ga_end).count();
+  result.objectives = model.Evaluate(genes, true);
+  result.fitted = ApplyGenes(base, blocks, genes);
+  result.targets_mm = model.Targets();
+  result.achieved_mm = model.Achieved(genes);
+  result.seam_mismatch_mm = model.SeamMismatch(genes);
+  return result;
+}
+
+}  // namespace bespoke

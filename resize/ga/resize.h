@@ -1,0 +1,76 @@
+// Made-to-measure pattern resizing with the multi-objective genetic algorithm
+// of thesis chapter 4 (NSGA-II selection with pagmo's non-dominated sorting
+// and crowding distance), followed by a constrained polish (polish.h).
+//
+// Input: a base pattern (validated, with bindings) and the body's
+// measurements (mm, core names; every bound measurement must be present).
+// Output: the fitted pattern, its objective values before and after the
+// polish, the final Pareto front, per-generation statistics, and the
+// proportional-grading seed for comparison.
+//
+// Deterministic for a given seed (variation runs on one generator; only the
+// pure fitness evaluation runs in parallel, with TBB). Errors: InputError for
+// bad options, unknown or missing measurements.
+#ifndef BESPOKE_RESIZE_GA_RESIZE_H_
+#define BESPOKE_RESIZE_GA_RESIZE_H_
+
+#include <cstdint>
+#include <vector>
+
+#include "resize/ga/block.h"
+#include "resize/ga/objectives.h"
+#include "resize/ga/polish.h"
+#include "resize/pattern/measurements.h"
+#include "resize/pattern/pattern.h"
+#include "scanners/core/progress.h"
+
+namespace bespoke {
+
+struct ResizeOptions {
+  int population = 400;            // individuals (thesis: 400). Even, >= 8.
+  int generations = 200;           // generations (thesis: 200)
+  std::uint64_t seed = 1;          // random seed; same seed, same result
+  double crossover_rate = 0.9;     // probability a mating pair is recombined. Default 0.9.
+  double mutation_rate = 0.6;      // at generation 0 (thesis: 0.6)
+  double mutation_rate_step = 0.002;  // subtracted per generation (thesis: 0.002)
+  double mutation_rate_min = 0.05;    // floor. Default 0.05.
+  double mutation_exponent = 2;       // r of Eq 4.4. Default 2.
+  double mutation_range = 0.05;       // t of Eq 4.4 as a fraction of the block size. Default 0.05.
+  double noise_sigma_mm = 1;          // Gaussian noise of the initial population (thesis: unit)
+  double life_min = 3, life_max = 12;  // generations, Eq 4.2. Defaults 3 and 12.
+  double tolerance_mm = 1;         // measurement tolerance of the final pick. Default 1 mm.
+  double min_gap_mm = 0.1;         // grid ordering gap. Default 0.1 mm.
+  bool polish = true;              // run the constrained polish. Default on.
+  PolishOptions polish_options;
+  BlockOptions block_options;
+  void Check() const;  // InputError naming the bad option
+};
+
+struct GenerationStats {
+  int generation = 0;
+  double best_measurement_mm = 0;  // least Eq 4.5 in the population
+  double best_seam = 0;
+  double best_shape_deg = 0;
+  int front_size = 0;
+};
+
+struct ResizeResult {
+  Pattern fitted;                 // the final answer
+  Objectives ga_objectives;       // the GA's pick, before the polish
+  Objectives objectives;          // the final answer
+  PolishReport polish;
+  std::vector<Objectives> front;  // final first front
+  std::vector<GenerationStats> history;
+  Pattern seed;                   // proportional scaling (Algorithm 6)
+  Objectives seed_objectives;
+  std::vector<double> targets_mm, achieved_mm;  // per binding
+  std::vector<double> seam_mismatch_mm;         // per seam: length(a) - length(b) - ease
+  double ga_time_s = 0, polish_time_s = 0;
+};
+
+ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& base,
+                           const MeasurementSet& body, Progress* progress);
+
+}  // namespace bespoke
+
+#endif  // BESPOKE_RESIZE_GA_RESIZE_H_

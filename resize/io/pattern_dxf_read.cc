@@ -1,0 +1,254 @@
+// DXF reader for AAMA/ASTM pattern files (R12 and 2000). See pattern_dxf.h.
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "resize/io/pattern_dxf.h"
+#include "resize/pattern/geometry.h"
+#include "scanners/core/errors.h"
+
+namespace bespoke {
+namespace {
+
+struct Pair {
+  int code;
+  std::string value;
+  int line;
+};
+
+std::string Trim(const std::string& s) {
+  const size_t a = s.find_first_not_of(" \t\r");
+  if (a == std::string::npos) return "";
+  return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
+}
+
+std::vector<Pair> Tokenise(const std::string& text, const std::string& what) {
+  std::vector<Pair> pairs;
+  std::istringstream in(text);
+  std::string code, value;
+  int line = 0;
+  while (std::getline(in, code)) {
+    ++line;
+    if (!std::getline(in, value))
+      throw InputError(what + ": line " + std::to_string(line) + ": group code without a value");
+    ++line;
+    try {
+      size_t used = 0;
+      const int c = std::stoi(Trim(code), &used);
+      if (used != Trim(code).size()) throw std::invalid_argument("trailing");
+      pairs.push_back({c, Trim(value), line});
+    } catch (const std::exception&) {
+      throw InputError(what + ": line " + std::to_string(line - 1) + ": bad group code '" +
+                       Trim(code) + "'");
+    }
+  }
+  return pairs;
+}
+
+double Number(const Pair& p, const std::string& what) {
+  try {
+    size_t used = 0;
+    const double v = std::stod(p.value, &used);
+    if (used != p.value.size() || !std::isfinite(v)) throw std::invalid_argument("bad");
+    return v;
+  } catch (const std::exception&) {
+    throw InputError(what + ": line " + std::to_string(p.line) + ": bad number '" + p.value + "'");
+  }
+}
+
+// One entity: its type and group pairs (for POLYLINE: the VERTEX points too).
+struct Entity {
+  std::string type, layer;
+  std::vector<Pair> pairs;
+  std::vector<Eigen::Vector2d> points;
+  bool closed = false;
+};
+
+struct RawBlock {
+  std::string name;
+  std::vector<Entity> entities;
+};
+
+struct Insert {
+  Eigen::Vector2d at = Eigen::Vector2d::Zero();
+  Eigen::Vector2d scale = Eigen::Vector2d::Ones();
+  double angle_deg = 0;
+};
+
+double Get(const Entity& e, int code, double fallback, const std::string& what) {
+  for (const Pair& p : e.pairs)
+    if (p.code == code) return Number(p, what);
+  return fallback;
+}
+
+std::string GetText(const Entity& e, int code) {
+  for (const Pair& p : e.pairs)
+    if (p.code == code) return p.value;
+  return "";
+}
+
+// Splits the pair stream into entities (0-delimited), folding VERTEX/SEQEND
+// into their POLYLINE and reading LWPOLYLINE point lists.
+std::vector<Entity> Entities(const std::vector<Pair>& pairs, size_t begin, size_t end,
+                             const std::string& what) {
+  std::vector<Entity> entities;
+  Entity* polyline = nullptr;
+  for (size_t i = begin; i < end;) {
+    Entity e;
+    e.type = pairs[i].value;
+    for (++i; i < end && pairs[i].code != 0; ++i) {
+      if (pairs[i].code == 8) e.layer = pairs[i].value;
+      e.pairs.push_back(pairs[i]);
+    }
+    if (e.type == "VERTEX" && polyline) {
+      polyline->points.emplace_back(Get(e, 10, 0, what), Get(e, 20, 0, what));
+      continue;
+    }
+    if (e.type == "SEQEND") {
+      polyline = nullptr;
+      continue;
+    }
+    if (e.type == "POLYLINE") e.closed = (static_cast<int>(Get(e, 70, 0, what)) & 1) != 0;
+    if (e.type == "LWPOLYLINE") {
+      e.closed = (static_cast<int>(Get(e, 70, 0, what)) & 1) != 0;
+      double x = 0;
+      for (const Pair& p : e.pairs) {
+        if (p.code == 10) x = Number(p, what);
+        if (p.code == 20) e.points.emplace_back(x, Number(p, what));
+      }
+    }
+    entities.push_back(std::move(e));
+    polyline = entities.back().type == "POLYLINE" ? &entities.back() : nullptr;
+  }
+  return entities;
+}
+
+Outline Clean(std::vector<Eigen::Vector2d> points) {
+  std::vector<Eigen::Vector2d> kept;
+  for (const Eigen::Vector2d& p : points)
+    if (kept.empty() || (p - kept.back()).norm() > 1e-6) kept.push_back(p);
+  while (kept.size() > 1 && (kept.front() - kept.back()).norm() <= 1e-6) kept.pop_back();
+  Outline o(static_cast<Eigen::Index>(kept.size()), 2);
+  for (size_t i = 0; i < kept.size(); ++i) o.row(i) = kept[i].transpose();
+  return o;
+}
+
+Piece BuildPiece(const RawBlock& block, const Insert& insert, double unit,
+                 const std::string& what) {
+  const double c = std::cos(insert.angle_deg * M_PI / 180), s = std::sin(insert.angle_deg * M_PI / 180);
+  auto place = [&](const Eigen::Vector2d& p) -> Eigen::Vector2d {
+    const Eigen::Vector2d q = p.cwiseProduct(insert.scale);
+    return unit * (Eigen::Vector2d(c * q.x() - s * q.y(), s * q.x() + c * q.y()) + insert.at);
+  };
+  Piece piece;
+  piece.name = block.name;
+  const Entity* sew = nullptr;
+  const Entity* cut = nullptr;
+  for (const Entity& e : block.entities) {
+    const bool poly = (e.type == "POLYLINE" || e.type == "LWPOLYLINE") && e.points.size() >= 3;
+    if (!poly) continue;
+    if (e.layer == "14") sew = &e;
+    if (e.layer == "1" && (!cut || e.points.size() > cut->points.size())) cut = &e;
+  }
+  if (!sew)
+    for (const Entity& e : block.entities)
+      if ((e.type == "POLYLINE" || e.type == "LWPOLYLINE") && e.layer == "8" && e.closed &&
+          (!sew || e.points.size() > sew->points.size()))
+        sew = &e;
+  if (!sew) sew = cut;
+  if (!sew) throw InputError(what + ": block '" + block.name + "' has no closed outline");
+  std::vector<Eigen::Vector2d> pts;
+  for (const Eigen::Vector2d& p : sew->points) pts.push_back(place(p));
+  piece.outline = Clean(pts);
+  if (SignedArea(piece.outline) < 0) piece.outline = piece.outline.colwise().reverse().eval();
+  std::set<int> notches;
+  for (const Entity& e : block.entities) {
+    if (&e == sew || &e == cut) continue;
+    const Eigen::Vector2d p0 = place({Get(e, 10, 0, what), Get(e, 20, 0, what)});
+    const Eigen::Vector2d p1 = place({Get(e, 11, 0, what), Get(e, 21, 0, what)});
+    if ((e.type == "POLYLINE" || e.type == "LWPOLYLINE") && e.layer == "8") {
+      std::vector<Eigen::Vector2d> line;
+      for (const Eigen::Vector2d& p : e.points) line.push_back(place(p));
+      if (e.closed) line.push_back(line.front());
+      Outline o(static_cast<Eigen::Index>(line.size()), 2);
+      for (size_t i = 0; i < line.size(); ++i) o.row(i) = line[i].transpose();
+      piece.internal_lines.push_back(o);
+    } else if (e.layer == "4" && (e.type == "POINT" || e.type == "LINE")) {
+      Eigen::Index nearest = 0;
+      (piece.outline.rowwise() - p0.transpose()).rowwise().squaredNorm().minCoeff(&nearest);
+      notches.insert(static_cast<int>(nearest));
+    } else if (e.layer == "7" && e.type == "LINE") {
+      piece.has_grain = true;
+      piece.grain_start = p0;
+      piece.grain_end = p1;
+    } else if (e.type == "TEXT" && e.layer == "1") {
+      const std::string text = GetText(e, 1);
+      if (text.rfind("Cut ", 0) == 0) {
+        try {
+          piece.cut_count = std::max(1, std::stoi(text.substr(4)));
+        } catch (const std::exception&) {
+        }
+      }
+    }
+  }
+  piece.notches.assign(notches.begin(), notches.end());
+  return piece;
+}
+
+}  // namespace
+
+Pattern PatternFromDxf(const std::string& text, const std::string& what) {
+  const std::vector<Pair> pairs = Tokenise(text, what);
+  double unit = 1.0;
+  std::vector<RawBlock> blocks;
+  std::map<std::string, Insert> inserts;
+  for (size_t i = 0; i + 1 < pairs.size(); ++i) {
+    if (pairs[i].code == 9 && pairs[i].value == "$INSUNITS") {
+      const int u = static_cast<int>(Number(pairs[i + 1], what));
+      unit = u == 1 ? 25.4 : u == 5 ? 10.0 : u == 6 ? 1000.0 : 1.0;
+    }
+    if (pairs[i].code != 0 || pairs[i].value != "SECTION" || pairs[i + 1].code != 2) continue;
+    const std::string section = pairs[i + 1].value;
+    size_t end = i + 2;
+    while (end < pairs.size() && !(pairs[end].code == 0 && pairs[end].value == "ENDSEC")) ++end;
+    if (end == pairs.size()) throw InputError(what + ": section " + section + " has no ENDSEC");
+    const std::vector<Entity> entities = Entities(pairs, i + 2, end, what);
+    if (section == "BLOCKS") {
+      for (const Entity& e : entities) {
+        if (e.type == "BLOCK") blocks.push_back({GetText(e, 2), {}});
+        else if (e.type != "ENDBLK" && !blocks.empty()) blocks.back().entities.push_back(e);
+      }
+    } else if (section == "ENTITIES") {
+      for (const Entity& e : entities)
+        if (e.type == "INSERT")
+          inserts[GetText(e, 2)] = {{Get(e, 10, 0, what), Get(e, 20, 0, what)},
+                                    {Get(e, 41, 1, what), Get(e, 42, 1, what)},
+                                    Get(e, 50, 0, what)};
+    }
+    i = end;
+  }
+  Pattern pattern;
+  pattern.name = std::filesystem::path(what).stem().string();
+  pattern.source = what;
+  for (const RawBlock& block : blocks) {
+    if (block.name.empty() || block.name[0] == '*' || block.name[0] == '$') continue;
+    if (block.entities.empty()) continue;
+    const auto it = inserts.find(block.name);
+    pattern.pieces.push_back(BuildPiece(block, it == inserts.end() ? Insert{} : it->second, unit, what));
+  }
+  if (pattern.pieces.empty()) throw InputError(what + ": no pattern pieces (BLOCKs) found");
+  ValidatePattern(pattern, what);
+  return pattern;
+}
+
+Pattern ReadPatternDxf(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file, "cannot open the DXF file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return PatternFromDxf(text.str(), file.string());
+}
+
+}  // namespace bespoke
