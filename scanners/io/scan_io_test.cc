@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "scanners/io/io_test_util.h"
+#include "scanners/io/malformed_corpus.h"
 #include "scanners/io/scan_io.h"
 #include "tests/support/test_support.h"
 
@@ -80,6 +81,18 @@ TEST(ScanIoWrite, OverwritesAtomically) {
     ++files;
   }
   EXPECT_EQ(files, 1);  // no temporary files left behind
+}
+
+// The shared malformed corpus (also run through `bespoke info` by
+// pipeline/cmd_info_test.cc), read with default options.
+TEST(ScanIoRead, MalformedCorpusIsRejected) {
+  TempDir dir;
+  const auto corpus = testing::MalformedCorpus();
+  EXPECT_GE(corpus.size(), 25u);
+  for (const auto& bad : corpus) {
+    SCOPED_TRACE(bad.name);
+    testing::ExpectScanRejected(dir / bad.name, bad.bytes, bad.fragment, ReadOptions());
+  }
 }
 
 }  // namespace
