@@ -6,6 +6,7 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <set>
@@ -163,8 +164,12 @@ BatchOutcome RunBatch(const BatchOptions& options, Progress* progress) {
                options.shard.whole() ? "" : " shard " + options.shard.ToString(), plan.scans.size(),
                outcome.skipped, todo.size(), jobs);
 
+  // Workers share the CPUs: with 2 CPUs and 2 jobs each gets 1 thread, so the
+  // parallel stages inside a scan do not oversubscribe the machine.
+  const int threads = jobs > 1 ? std::max(1, AvailableCpus() / jobs) : 0;
   WorkerSettings worker{options.worker.empty() ? SelfExecutable() : fs::absolute(options.worker),
-                        options.design, options.units, options.timeout_s, options.memory_mb};
+                        options.design, options.units, options.timeout_s, options.memory_mb,
+                        threads};
   std::vector<WorkerJob> work;
   std::map<std::string, const ScanEntry*> by_id;
   for (const ScanEntry& entry : todo) {

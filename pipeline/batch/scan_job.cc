@@ -80,6 +80,7 @@ void ScanJobOptions::Check() const {
   if (!landmarks.empty() && !fs::is_regular_file(landmarks, ec)) {
     throw InputError(landmarks, "landmark override file not found");
   }
+  if (threads < 0) throw InputError("--threads must be >= 0 (0 = all CPUs)");
   for (char c : scan_id) {
     if (c == '/' || c == '\0') throw InputError("--scan-id '" + scan_id + "' must not contain '/'");
   }
@@ -87,7 +88,8 @@ void ScanJobOptions::Check() const {
 
 json ScanJobOptions::ToJson() const {
   return {{"scan_id", scan_id}, {"units", units}, {"design", design},
-          {"landmarks", landmarks.string()}, {"write_cleaned_cloud", write_cleaned_cloud}};
+          {"landmarks", landmarks.string()}, {"write_cleaned_cloud", write_cleaned_cloud},
+          {"threads", threads}};
 }
 
 DoneRecord RunScanJob(const ScanJobOptions& options, const fs::path& scan, const fs::path& out_dir,

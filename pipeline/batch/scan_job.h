@@ -34,7 +34,9 @@ struct ScanJobOptions {
   std::string design;               // "" (default) = no pattern; "shirt" or "trousers"
   std::filesystem::path landmarks;  // "" (default) = automatic landmarks; else an override JSON
   bool write_cleaned_cloud = true;  // write cleaned.ply (default yes)
-  // Throws InputError for an unknown design or unit, or a missing landmark file.
+  int threads = 0;                  // threads of the parallel stages; 0 (default) = all CPUs
+  // Throws InputError for an unknown design or unit, a missing landmark file,
+  // or threads < 0.
   void Check() const;
   nlohmann::json ToJson() const;
 };

@@ -79,6 +79,7 @@ std::vector<std::string> WorkerArguments(const WorkerSettings& settings, const S
                                          const fs::path& folder) {
   std::vector<std::string> argv = {settings.executable.string(), "run", entry.path.string(),
                                    "-o", folder.string(), "--scan-id", entry.id};
+  if (settings.threads > 0) argv.insert(argv.end(), {"--threads", std::to_string(settings.threads)});
   const std::string design = entry.design.empty() ? settings.design : entry.design;
   const std::string units = entry.units.empty() ? settings.units : entry.units;
   if (!design.empty()) argv.insert(argv.end(), {"--design", design});

@@ -1,8 +1,9 @@
 // One scan's worker, seen from the batch: its command line, and the verdict
 // once it has ended.
 //
-// The worker is `bespoke run SCAN -o FOLDER --scan-id ID [--design D]
-// [--units U] [--landmarks L]`, its output going to FOLDER/run.log.
+// The worker is `bespoke run SCAN -o FOLDER --scan-id ID [--threads T]
+// [--design D] [--units U] [--landmarks L]`, its output going to
+// FOLDER/run.log.
 // RecordWorkerEnd reads what the worker left and writes FOLDER/done.json:
 //   - exit 0 with a valid done.json of status "ok": ok; the worker's record
 //     gains a "worker" section (wall/CPU time, peak memory) and is rewritten
@@ -41,6 +42,7 @@ struct WorkerSettings {
   std::string units;                 // used when the entry has none
   double timeout_s = 600;            // for the failure message
   std::int64_t memory_mb = 0;        // for the failure message
+  int threads = 0;                   // --threads of each worker; 0 = all CPUs
 };
 
 // argv of the worker for `entry` writing into `folder` (argv[0] = executable).

@@ -40,7 +40,7 @@ int Run(int argc, char** argv) {
     if (a == "run") continue;
     if (a == "-o" && i + 1 < argc) out = argv[++i];
     else if (a == "--scan-id" && i + 1 < argc) id = argv[++i];
-    else if ((a == "--design" || a == "--units" || a == "--landmarks") && i + 1 < argc) ++i;
+    else if ((a == "--design" || a == "--units" || a == "--landmarks" || a == "--threads") && i + 1 < argc) ++i;
     else if (scan.empty()) scan = a;
   }
   if (scan.empty() || out.empty()) {
