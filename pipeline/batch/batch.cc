@@ -200,6 +200,10 @@ BatchOutcome RunBatch(const BatchOptions& options, Progress* progress) {
           spdlog::info("[{}/{}] {} ok ({:.1f} s)", outcome.ran, work.size(), entry.id, r.wall_s);
         }
         ProgressUpdate(progress, outcome.ran);
+        UpdateAttempt(&attempt, {{"ran", outcome.ran}, {"ok", ok}, {"failed", failed},
+                                 {"skipped", outcome.skipped},
+                                 {"wall_s", std::chrono::duration<double>(
+                                                std::chrono::steady_clock::now() - started).count()}});
       });
   ProgressEnd(progress);
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 
 #include "pipeline/batch/done_record.h"
@@ -101,6 +102,21 @@ Attempt StartAttempt(const fs::path& out_dir, const Shard& shard, const std::str
               {"status", "running"}};
   WriteJsonFile(a.file, a.record);
   return a;
+}
+
+namespace {
+double SteadySeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+}  // namespace
+
+void UpdateAttempt(Attempt* attempt, const json& fields, double min_interval_s) {
+  attempt->record.update(fields);
+  const double now = SteadySeconds();
+  if (now - attempt->last_write_s < min_interval_s) return;
+  attempt->last_write_s = now;
+  attempt->record["updated_utc"] = UtcNow();
+  WriteJsonFile(attempt->file, attempt->record);
 }
 
 void FinishAttempt(Attempt* attempt, const json& fields) {

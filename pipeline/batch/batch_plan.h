@@ -52,12 +52,16 @@ std::vector<FoundPlan> FindPlans(const std::filesystem::path& out_dir);
 // still "running" after the fact means the process was killed or lost.
 struct Attempt {
   std::filesystem::path file;
+  double last_write_s = 0;  // steady-clock seconds of the last write
   nlohmann::json record;  // shard, label, host, pid, started_utc, finished_utc,
                           // status, exit_code, planned, skipped, ran, ok, failed, wall_s, jobs
 };
 Attempt StartAttempt(const std::filesystem::path& out_dir, const Shard& shard,
                      const std::string& label, int jobs);
 void FinishAttempt(Attempt* attempt, const nlohmann::json& fields);
+// Records progress (ran, ok, failed, wall_s) while running, so a killed
+// attempt still shows what it did; writes at most every `min_interval_s`.
+void UpdateAttempt(Attempt* attempt, const nlohmann::json& fields, double min_interval_s = 2.0);
 // All attempt records of `out_dir`, ordered by start time then file name.
 std::vector<nlohmann::json> ReadAttempts(const std::filesystem::path& out_dir);
 

@@ -120,11 +120,15 @@ std::string AttemptsSection(const BatchResultsInput& input, int* ran_total, doub
   for (const json& a : input.attempts) ++per_shard[a.value("shard", "")];
   for (const json& a : input.attempts) {
     std::string status = a.value("status", "");
-    if (status == "running") status = "did not finish (killed, lost, or still running)";
+    if (status == "running") {
+      status = "did not finish (killed, lost, or still running); last seen " +
+               a.value("updated_utc", a.value("started_utc", ""));
+    }
     const int ran = a.value("ran", 0);
     const double wall = a.value("wall_s", 0.0);
     *ran_total += ran;
-    const double start = ParseUtc(a.value("started_utc", "")), end = ParseUtc(a.value("finished_utc", ""));
+    const double start = ParseUtc(a.value("started_utc", ""));
+    const double end = ParseUtc(a.value("finished_utc", a.value("updated_utc", "")));
     if (start >= 0 && (first < 0 || start < first)) first = start;
     if (end >= 0 && end > last) last = end;
     html += fmt::format(
