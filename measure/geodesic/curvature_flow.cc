@@ -18,6 +18,9 @@ void CurvatureFlowOptions::Check() const {
   if (!(max_step_segments > 0) || !std::isfinite(max_step_segments))
     throw InputError("curvature flow: max_step_segments must be > 0, got " +
                      std::to_string(max_step_segments));
+  if (!(replan_distance_mm >= 0) || !std::isfinite(replan_distance_mm))
+    throw InputError("curvature flow: replan_distance_mm must be >= 0, got " +
+                     std::to_string(replan_distance_mm));
 }
 
 namespace {
@@ -36,7 +39,8 @@ struct FlowSystem {
 // Estimates the plane of every interior sample and projects the sample onto
 // it (q_i). Returns the number of samples without a plane.
 int EstimatePlanes(const TangentPlaneSource& source, const Eigen::MatrixX3d& p,
-                   std::vector<int>* hints, FlowSystem* sys) {
+                   double replan, std::vector<int>* hints, std::vector<TangentPlane>* planes,
+                   FlowSystem* sys) {
   const Eigen::Index m = p.rows();
   int held = 0;
   sys->foot[0] = p.row(0).transpose();
@@ -45,14 +49,21 @@ int EstimatePlanes(const TangentPlaneSource& source, const Eigen::MatrixX3d& p,
     const Eigen::Vector3d x = p.row(i).transpose();
     int no_hint = -1;
     int* hint = hints ? &(*hints)[static_cast<size_t>(i)] : &no_hint;
-    TangentPlane plane;
     Basis& t = sys->tangent[static_cast<size_t>(i - 1)];
-    if (!source.PlaneAt(x, hint, &plane) || !(plane.normal.norm() > 0) ||
-        !plane.point.allFinite() || !plane.normal.allFinite()) {
+    TangentPlane plane;
+    TangentPlane* cached = planes ? &(*planes)[static_cast<size_t>(i)] : nullptr;
+    if (cached && cached->normal.squaredNorm() > 0 &&
+        (x - cached->point).squaredNorm() <= replan * replan) {
+      plane = *cached;
+    } else if (!source.PlaneAt(x, hint, &plane) || !(plane.normal.norm() > 0) ||
+               !plane.point.allFinite() || !plane.normal.allFinite()) {
       t.setZero();
       sys->foot[i] = x;
+      if (cached) cached->normal.setZero();
       ++held;
       continue;
+    } else if (cached) {
+      *cached = plane;
     }
     const Eigen::Vector3d n = plane.normal.normalized();
     sys->foot[i] = x - n * n.dot(x - plane.point);
@@ -95,9 +106,48 @@ double PolylineLength(const Eigen::MatrixX3d& samples) {
   return length;
 }
 
+double SurfaceCurveLength(const Eigen::MatrixX3d& samples,
+                          const std::vector<TangentPlane>& planes) {
+  BESPOKE_CHECK(planes.size() == static_cast<size_t>(samples.rows()), "planes per sample");
+  double length = 0;
+  for (Eigen::Index i = 1; i < samples.rows(); ++i) {
+    const Eigen::Vector3d chord = (samples.row(i) - samples.row(i - 1)).transpose();
+    const double c = chord.norm();
+    const Eigen::Vector3d& a = planes[static_cast<size_t>(i - 1)].normal;
+    const Eigen::Vector3d& b = planes[static_cast<size_t>(i)].normal;
+    if (c == 0 || a.squaredNorm() == 0 || b.squaredNorm() == 0) {
+      length += c;
+      continue;
+    }
+    const Eigen::Vector3d turn = (a.dot(b) < 0 ? -b : b) - a;
+    const double s = std::min(1.0, 0.5 * std::abs(turn.dot(chord)) / c);
+    length += s > 1e-8 ? c * std::asin(s) / s : c;
+  }
+  return length;
+}
+
+void FillMissingPlanes(const TangentPlaneSource& source, const Eigen::MatrixX3d& samples,
+                       std::vector<int>* hints, std::vector<TangentPlane>* planes) {
+  const size_t m = static_cast<size_t>(samples.rows());
+  if (planes->size() != m) {
+    TangentPlane unknown;
+    unknown.normal.setZero();
+    planes->resize(m, unknown);
+  }
+  for (size_t i = 0; i < m; ++i) {
+    if ((*planes)[i].normal.squaredNorm() > 0) continue;
+    int no_hint = -1;
+    int* hint = hints && hints->size() == m ? &(*hints)[i] : &no_hint;
+    if (!source.PlaneAt(samples.row(static_cast<Eigen::Index>(i)).transpose(), hint,
+                        &(*planes)[i]))
+      (*planes)[i].normal.setZero();
+  }
+}
+
 CurvatureFlowReport FlowPolyline(const CurvatureFlowOptions& options,
                                  const TangentPlaneSource& source,
-                                 Eigen::MatrixX3d* samples, std::vector<int>* hints) {
+                                 Eigen::MatrixX3d* samples, std::vector<int>* hints,
+                                 std::vector<TangentPlane>* planes) {
   options.Check();
   if (samples == nullptr || samples->rows() < 2)
     throw InputError("curvature flow: a polyline needs at least 2 samples");
@@ -106,6 +156,9 @@ CurvatureFlowReport FlowPolyline(const CurvatureFlowOptions& options,
   const Eigen::Index m = samples->rows();
   if (hints && hints->size() != static_cast<size_t>(m))
     throw InputError("curvature flow: " + std::to_string(hints->size()) + " hints for " +
+                     std::to_string(m) + " samples");
+  if (planes && planes->size() != static_cast<size_t>(m))
+    throw InputError("curvature flow: " + std::to_string(planes->size()) + " planes for " +
                      std::to_string(m) + " samples");
   CurvatureFlowReport report;
   if (m <= 2) {
@@ -122,7 +175,8 @@ CurvatureFlowReport FlowPolyline(const CurvatureFlowOptions& options,
   Eigen::MatrixX3d& p = *samples;
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
     report.iterations = iteration;
-    report.samples_without_plane += EstimatePlanes(source, p, hints, &sys);
+    report.samples_without_plane +=
+        EstimatePlanes(source, p, options.replan_distance_mm, hints, planes, &sys);
     SolveOffsets(&sys);
     // Trust region on the in-plane slide (|T u| = |u|, T orthonormal).
     const double max_step =

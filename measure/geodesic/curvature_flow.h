@@ -64,6 +64,10 @@ struct CurvatureFlowOptions {
   // than this multiple of the mean segment length (guards against a kinked
   // start leaving the region where its planes are valid). Default 1.
   double max_step_segments = 1.0;
+  // A sample's plane is re-estimated only once the sample has slid more than
+  // this from the plane's point (mm); 0 (default) = every iteration. With the
+  // `planes` cache below, planes also carry over between calls.
+  double replan_distance_mm = 0;
   void Check() const;  // InputError when a value is out of range
 };
 
@@ -77,15 +81,33 @@ struct CurvatureFlowReport {
 
 // Flows `samples` (#S x 3, mm, S >= 2, finite; rows 0 and S-1 never move) in
 // place. `hints`: null, or #S locality hints passed to the source (in/out; -1
-// when unknown). Polylines with S <= 2 are returned unchanged. Throws
-// InputError for bad options, fewer than 2 samples, non-finite samples or a
-// hints vector of the wrong size.
+// when unknown). `planes`: null, or #S planes last estimated for the samples
+// (in/out; a zero normal means unknown), reused per replan_distance_mm.
+// Polylines with S <= 2 are returned unchanged. Throws InputError for bad
+// options, fewer than 2 samples, non-finite samples or hints/planes vectors
+// of the wrong size.
 CurvatureFlowReport FlowPolyline(const CurvatureFlowOptions& options,
                                  const TangentPlaneSource& source,
-                                 Eigen::MatrixX3d* samples, std::vector<int>* hints);
+                                 Eigen::MatrixX3d* samples, std::vector<int>* hints,
+                                 std::vector<TangentPlane>* planes = nullptr);
 
 // Sum of segment lengths of a polyline (#S x 3), mm.
 double PolylineLength(const Eigen::MatrixX3d& samples);
+
+// The length of the surface curve the polyline samples (#S x 3, mm), given
+// each sample's tangent plane (#S; a zero normal = unknown): every chord c is
+// replaced by the circular arc through its ends whose normals turn as the
+// planes' normals do along the chord, c * asin(s) / s with s = |dn . c^| / 2.
+// Exact on spheres and great circles, second order elsewhere; removes the
+// chord bias -c^2 k^2 / 24 (k: normal curvature) of coarse polylines. Chords
+// with an unknown end normal count as chords.
+double SurfaceCurveLength(const Eigen::MatrixX3d& samples,
+                          const std::vector<TangentPlane>& planes);
+
+// Asks `source` for the planes still unknown (zero normal) in `planes` (#S,
+// resized to #S with zero normals when shorter); `hints` as in FlowPolyline.
+void FillMissingPlanes(const TangentPlaneSource& source, const Eigen::MatrixX3d& samples,
+                       std::vector<int>* hints, std::vector<TangentPlane>* planes);
 
 // The polyline resampled at uniform arc length with the fewest segments no
 // longer than `max_spacing_mm` (> 0); end points kept exactly. New samples lie

@@ -1,0 +1,91 @@
+// Geodesics over a scanned surface, computed directly on the point cloud (no
+// mesh): the entry point for measurements, `bespoke geodesic` and benchmarks.
+//
+// Holds the grid (cloud_grid.h: cells, sheet-aware nodes and links, FLANN
+// index, local surfaces) so that many queries on one scan are cheap, and the
+// propagation of the last source, so point-to-point queries sharing a start
+// point reuse it. Not thread-safe (that cache); one object per thread.
+//
+//   DistancesFrom(source): single source to all destinations (Algorithm 5),
+//     a distance per grid node and per scan point (the node's distance carried
+//     to the point to first order along the path's direction).
+//   Between(from, to): point to point. Propagates only until the target's
+//     node is settled, then flows the whole inherited path (resampled to
+//     polish_spacing_mm) with its true end points: the windowed propagation
+//     finds the route, the final flow makes it locally shortest.
+//
+// Coordinates are in the scan's frame and units (mm). A query point that is
+// not finite, or farther than max_snap_distance_mm from every scan point,
+// throws InputError saying so; so does a pair with no surface path between
+// them (different pieces of the cloud).
+#ifndef BESPOKE_MEASURE_GEODESIC_CLOUD_GEODESICS_H_
+#define BESPOKE_MEASURE_GEODESIC_CLOUD_GEODESICS_H_
+
+#include <memory>
+#include <string>
+
+#include "measure/geodesic/cloud_grid.h"
+#include "measure/geodesic/propagation.h"
+
+namespace bespoke {
+
+struct CloudGeodesicsOptions {
+  CloudGridOptions grid;
+  PropagationOptions propagation;
+  // Query points farther than this from the nearest scan point are rejected;
+  // 0 (default) = 2 cell sizes.
+  double max_snap_distance_mm = 0;
+  // Point to point: flow the whole path at the end (default true).
+  bool polish = true;
+  // Sample spacing of that final flow; 0 (default) = half a cell.
+  double polish_spacing_mm = 0;
+  CurvatureFlowOptions polish_flow = {100, 0.001, 1.0};  // 100 iterations, 0.001 mm
+  void Check() const;  // InputError when out of range
+};
+
+struct CloudDistanceField {
+  Eigen::VectorXd node_distance_mm;   // #nodes, +inf where unreachable
+  Eigen::VectorXd point_distance_mm;  // #P, +inf where unreachable
+  Eigen::Vector3d source = Eigen::Vector3d::Zero();  // snapped onto the surface, mm
+  PropagationStats stats;
+};
+
+struct CloudGeodesicPath {
+  double length_mm = 0;           // geodesic length
+  Eigen::MatrixX3d points;        // #S x 3 polyline, from the snapped `from` to `to`, mm
+  double propagated_length_mm = 0;  // the wavefront's estimate, before the final flow
+  bool polish_converged = true;
+  int polish_iterations = 0;
+  bool polish_rejected = false;   // the final flow cut across a gap and was undone
+  std::int64_t nodes_settled = 0;   // size of the propagation behind the answer
+};
+
+class CloudGeodesics {
+ public:
+  // Builds the grid over `points` (#P x 3, mm). Throws InputError as
+  // CloudGrid does.
+  CloudGeodesics(const CloudGeodesicsOptions& options, const Eigen::MatrixX3d& points,
+                 Progress* progress = nullptr);
+  ~CloudGeodesics();
+
+  const CloudGrid& grid() const { return grid_; }
+  const CloudGeodesicsOptions& options() const { return options_; }
+
+  CloudDistanceField DistancesFrom(const Eigen::Vector3d& source, Progress* progress = nullptr);
+  CloudGeodesicPath Between(const Eigen::Vector3d& from, const Eigen::Vector3d& to);
+
+  // `x` moved onto the surface and its node; InputError (naming `what`, e.g.
+  // "--from") when not finite or too far from the scan.
+  std::pair<Eigen::Vector3d, int> Snap(const Eigen::Vector3d& x, const std::string& what) const;
+
+ private:
+  Propagation& PropagationFrom(const Eigen::Vector3d& source, int node);
+
+  CloudGeodesicsOptions options_;
+  CloudGrid grid_;
+  std::unique_ptr<Propagation> cached_;
+};
+
+}  // namespace bespoke
+
+#endif  // BESPOKE_MEASURE_GEODESIC_CLOUD_GEODESICS_H_

@@ -1,0 +1,101 @@
+#include "measure/geodesic/cloud_geodesics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "measure/geodesic/testing/sampled_surfaces.h"
+#include "scanners/core/errors.h"
+
+namespace bespoke {
+namespace {
+
+using testing::Sampling;
+constexpr double kPi = 3.14159265358979323846;
+
+Eigen::Vector3d OnSphere(double r, double lon, double lat) {
+  return r * Eigen::Vector3d(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon),
+                             std::sin(lat));
+}
+
+Eigen::Vector3d OnCylinder(double r, double theta, double z) {
+  return Eigen::Vector3d(r * std::cos(theta), r * std::sin(theta), z);
+}
+
+// Relative error of point-to-point lengths on a sphere of radius 80 mm.
+double WorstSphereError(const Eigen::MatrixX3d& cloud, double r) {
+  CloudGeodesics geodesics({}, cloud);
+  const double pairs[][4] = {{0.0, 0.0, 1.2, 0.4},  {0.3, -0.6, 2.8, 0.5},
+                             {-1.0, 0.2, 1.0, -0.9}, {0.5, 1.0, 0.5, -1.1},
+                             {2.0, 0.1, 2.3, 0.15}};
+  double worst = 0;
+  for (const auto& p : pairs) {
+    const Eigen::Vector3d a = OnSphere(r, p[0], p[1]), b = OnSphere(r, p[2], p[3]);
+    const CloudGeodesicPath path = geodesics.Between(a, b);
+    const double exact = testing::SphereDistance(r, a, b);
+    worst = std::max(worst, std::abs(path.length_mm - exact) / exact);
+    for (Eigen::Index i = 0; i < path.points.rows(); ++i)  // the path lies on the surface
+      EXPECT_NEAR(path.points.row(i).norm(), r, 0.5) << i;
+  }
+  return worst;
+}
+
+TEST(CloudGeodesics, PlaneGivesStraightLines) {
+  const Eigen::MatrixX3d cloud = testing::SamplePlane({2.0, 0.0, 3}, 150);
+  CloudGeodesics geodesics({}, cloud);
+  const double pairs[][4] = {{-120, -100, 110, 90}, {-130, 0, 130, 5}, {0, 0, 20, 3}, {-50, 120, 60, -130}};
+  for (const auto& p : pairs) {
+    const Eigen::Vector3d a(p[0], p[1], 0), b(p[2], p[3], 0);
+    const CloudGeodesicPath path = geodesics.Between(a, b);
+    const double exact = (a - b).norm();
+    EXPECT_NEAR(path.length_mm, exact, 0.005 * exact) << a.transpose() << " -> " << b.transpose();
+    for (Eigen::Index i = 0; i < path.points.rows(); ++i)
+      EXPECT_NEAR(path.points(i, 2), 0.0, 0.05);
+  }
+}
+
+TEST(CloudGeodesics, SphereGivesGreatCircles) {
+  const double r = 80;
+  EXPECT_LE(WorstSphereError(testing::SampleSphere({2.0, 0.0, 5}, r), r), 0.005);
+}
+
+TEST(CloudGeodesics, CylinderGivesHelices) {
+  const double r = 50;
+  const Eigen::MatrixX3d cloud = testing::SampleCylinder({2.0, 0.0, 7}, r, 300);
+  CloudGeodesics geodesics({}, cloud);
+  const double pairs[][4] = {{0.0, 30, 2.5, 260}, {0.5, 150, -1.0, 40}, {1.0, 100, 1.0 + kPi * 0.9, 120}};
+  for (const auto& p : pairs) {
+    const CloudGeodesicPath path =
+        geodesics.Between(OnCylinder(r, p[0], p[1]), OnCylinder(r, p[2], p[3]));
+    const double exact = testing::CylinderDistance(r, p[0], p[1], p[2], p[3]);
+    EXPECT_NEAR(path.length_mm, exact, 0.005 * exact);
+  }
+}
+
+TEST(CloudGeodesics, DistanceFieldOnTheSphere) {
+  const double r = 80;
+  const Eigen::MatrixX3d cloud = testing::SampleSphere({2.0, 0.0, 11}, r);
+  CloudGeodesics geodesics({}, cloud);
+  const Eigen::Vector3d source = OnSphere(r, 0.2, 0.3);
+  const CloudDistanceField field = geodesics.DistancesFrom(source);
+  double sum = 0, worst = 0;
+  int counted = 0;
+  for (Eigen::Index i = 0; i < cloud.rows(); ++i) {
+    const Eigen::Vector3d x = cloud.row(i).transpose();
+    const double exact = testing::SphereDistance(r, source, x);
+    ASSERT_TRUE(std::isfinite(field.point_distance_mm[i]));
+    if (exact < 10) continue;
+    const double rel = std::abs(field.point_distance_mm[i] - exact) / exact;
+    sum += rel;
+    worst = std::max(worst, rel);
+    ++counted;
+  }
+  std::printf("sphere field: %d points, mean rel %.4f %%, max rel %.4f %%\n", counted,
+              100 * sum / counted, 100 * worst);
+  EXPECT_LE(sum / counted, 0.005);
+  EXPECT_LE(worst, 0.03);
+}
+
+}  // namespace
+}  // namespace bespoke

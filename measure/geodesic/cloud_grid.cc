@@ -1,0 +1,305 @@
+#include "measure/geodesic/cloud_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "scanners/core/errors.h"
+
+namespace bespoke {
+
+void CloudGridOptions::Check() const {
+  auto bad = [](const std::string& what) { throw InputError("cloud grid: " + what); };
+  if (!(cell_size_mm >= 0) || !std::isfinite(cell_size_mm)) bad("cell_size_mm must be >= 0");
+  if (!(auto_cell_spacings > 0) || !std::isfinite(auto_cell_spacings))
+    bad("auto_cell_spacings must be > 0");
+  if (neighbours < 6 || neighbours > 1000) bad("neighbours must be in [6, 1000]");
+  if (!(sheet_gap_mm >= 0) || !std::isfinite(sheet_gap_mm)) bad("sheet_gap_mm must be >= 0");
+  if (!(blend_cells >= 0 && blend_cells <= 3)) bad("blend_cells must be in [0, 3]");
+  if (!(max_link_angle_deg > 0 && max_link_angle_deg <= 90))
+    bad("max_link_angle_deg must be in (0, 90]");
+}
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+int Find(std::vector<int>* parent, int i) {
+  while ((*parent)[i] != i) i = (*parent)[i] = (*parent)[(*parent)[i]];
+  return i;
+}
+
+// Splits the points `run` (indices into `points`, all in one cell) into
+// groups connected by steps shorter than `gap`. Brute force for the usual
+// handful of points, k-NN for crowded cells.
+std::vector<std::vector<int>> SplitSheets(const Eigen::MatrixX3d& points, const int* run,
+                                          int count, double gap, const PointIndex& index,
+                                          const std::vector<std::int64_t>& keys) {
+  std::vector<int> parent(static_cast<size_t>(count));
+  std::iota(parent.begin(), parent.end(), 0);
+  const double gap2 = gap * gap;
+  if (count <= 96) {
+    for (int i = 0; i < count; ++i)
+      for (int j = i + 1; j < count; ++j)
+        if ((points.row(run[i]) - points.row(run[j])).squaredNorm() <= gap2)
+          parent[Find(&parent, i)] = Find(&parent, j);
+  } else {
+    std::unordered_map<int, int> local;
+    for (int i = 0; i < count; ++i) local[run[i]] = i;
+    std::vector<int> near;
+    std::vector<double> d2;
+    for (int i = 0; i < count; ++i) {
+      index.Knn(points.row(run[i]).transpose(), 12, &near, &d2);
+      for (size_t k = 0; k < near.size(); ++k) {
+        if (d2[k] > gap2 || keys[near[k]] != keys[run[i]]) continue;
+        parent[Find(&parent, i)] = Find(&parent, local.at(near[k]));
+      }
+    }
+  }
+  std::unordered_map<int, int> group_of_root;
+  std::vector<std::vector<int>> groups;
+  for (int i = 0; i < count; ++i) {
+    const int root = Find(&parent, i);
+    auto [it, inserted] = group_of_root.emplace(root, static_cast<int>(groups.size()));
+    if (inserted) groups.emplace_back();
+    groups[it->second].push_back(run[i]);
+  }
+  return groups;
+}
+
+}  // namespace
+
+CloudGrid::CloudGrid(const CloudGridOptions& options, const Eigen::MatrixX3d& points,
+                     Progress* progress) {
+  options.Check();
+  if (points.rows() < 10)
+    throw InputError("cloud grid: need at least 10 points, got " + std::to_string(points.rows()));
+  index_ = std::make_unique<PointIndex>(points);  // checks finiteness
+  spacing_ = index_->MedianSpacing();
+  if (!(spacing_ > 0)) throw InputError("cloud grid: all points coincide");
+  cell_ = options.cell_size_mm > 0 ? options.cell_size_mm : options.auto_cell_spacings * spacing_;
+  gap_ = options.sheet_gap_mm > 0 ? options.sheet_gap_mm : 2.5 * spacing_;
+  blend_ = options.blend_cells * cell_;
+  ProgressBegin(progress, "building the geodesic grid", 3);
+  BuildCells(points);
+  ProgressUpdate(progress, 1);
+  FitNodes(options, points);
+  ProgressUpdate(progress, 2);
+  LinkNodes(options);
+  ProgressUpdate(progress, 3);
+  ProgressEnd(progress);
+}
+
+CloudGrid::~CloudGrid() = default;
+
+std::int64_t CloudGrid::KeyOf(const Eigen::Vector3d& x) const {
+  std::int64_t c[3];
+  for (int k = 0; k < 3; ++k)
+    c[k] = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((x[k] - min_[k]) / cell_)),
+                                    0, dims_[k] - 1);
+  return c[0] + dims_[0] * (c[1] + dims_[1] * c[2]);  // Eq 3.19
+}
+
+void CloudGrid::BuildCells(const Eigen::MatrixX3d& points) {
+  min_ = points.colwise().minCoeff().transpose();
+  const Eigen::Vector3d extent = points.colwise().maxCoeff().transpose() - min_;
+  double total = 1;
+  for (int k = 0; k < 3; ++k) {
+    dims_[k] = static_cast<std::int64_t>(std::floor(extent[k] / cell_)) + 1;
+    total *= static_cast<double>(dims_[k]);
+  }
+  if (total > std::ldexp(1.0, 60))
+    throw InputError("cloud grid: cell size " + std::to_string(cell_) +
+                     " mm is far too small for the cloud's extent");
+  const Eigen::Index n = points.rows();
+  std::vector<std::int64_t> keys(static_cast<size_t>(n));
+  for (Eigen::Index i = 0; i < n; ++i) keys[i] = KeyOf(points.row(i).transpose());
+  std::vector<int> order(static_cast<size_t>(n));
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return keys[a] != keys[b] ? keys[a] < keys[b] : a < b; });
+  point_node_.assign(static_cast<size_t>(n), -1);
+  node_point_offsets_.assign(1, 0);
+  node_points_.reserve(static_cast<size_t>(n));
+  cells_.reserve(static_cast<size_t>(n) / 4 + 16);
+  for (size_t begin = 0; begin < order.size();) {
+    size_t end = begin;
+    while (end < order.size() && keys[order[end]] == keys[order[begin]]) ++end;
+    const std::int64_t key = keys[order[begin]];
+    const auto groups = SplitSheets(points, order.data() + begin, static_cast<int>(end - begin),
+                                    gap_, *index_, keys);
+    cells_[key] = {static_cast<int>(node_cell_.size()), static_cast<int>(groups.size())};
+    for (const auto& group : groups) {
+      const int node = static_cast<int>(node_cell_.size());
+      node_cell_.push_back(key);
+      for (int p : group) {
+        node_points_.push_back(p);
+        point_node_[static_cast<size_t>(p)] = node;
+      }
+      node_point_offsets_.push_back(static_cast<int>(node_points_.size()));
+    }
+    begin = end;
+  }
+}
+
+void CloudGrid::FitNodes(const CloudGridOptions& options, const Eigen::MatrixX3d& points) {
+  const int nodes = static_cast<int>(node_cell_.size());
+  sites_.resize(static_cast<size_t>(nodes));
+  surfaces_.resize(static_cast<size_t>(nodes));
+  std::vector<int> near;
+  std::vector<double> d2;
+  for (int node = 0; node < nodes; ++node) {
+    const int begin = node_point_offsets_[node], end = node_point_offsets_[node + 1];
+    Eigen::MatrixX3d own(end - begin, 3);
+    for (int i = begin; i < end; ++i) own.row(i - begin) = points.row(node_points_[i]);
+    const Eigen::Vector3d mean = own.colwise().mean().transpose();
+    index_->Knn(mean, options.neighbours, &near, &d2);
+    Eigen::MatrixX3d around(static_cast<Eigen::Index>(near.size()), 3);
+    for (size_t i = 0; i < near.size(); ++i) around.row(i) = points.row(near[i]);
+    // Seed plane from the node's own points (one sheet by construction), or
+    // from the nearest points within the sheet gap when the node is tiny.
+    double planarity = 1;
+    LocalSurface seed;
+    if (own.rows() >= 5) seed = PcaPlane(own, &planarity);
+    if (planarity > 0.3) {
+      std::vector<Eigen::Index> close;
+      for (size_t i = 0; i < near.size(); ++i)
+        if (d2[i] <= gap_ * gap_) close.push_back(static_cast<Eigen::Index>(i));
+      seed = close.size() >= 3 ? PcaPlane(around(close, Eigen::all)) : PcaPlane(around);
+    }
+    surfaces_[node] = FitLocalSurface(options.fit, around, seed, 0.5 * gap_);
+    sites_[node] = surfaces_[node].PlaneAt(mean).point;
+  }
+}
+
+bool CloudGrid::Connected(int a, int b, double cos_max) {
+  ++link_stats_.tested;
+  const LocalSurface& sa = surfaces_[a];
+  const LocalSurface& sb = surfaces_[b];
+  const Eigen::Vector3d& pa = sites_[a];
+  const Eigen::Vector3d& pb = sites_[b];
+  if (std::abs(sa.PlaneAt(pa).normal.dot(sb.PlaneAt(pb).normal)) < cos_max) {
+    ++link_stats_.angle;
+    return false;
+  }
+  if (std::abs(sa.Offset(pb)) > 0.5 * gap_ || std::abs(sb.Offset(pa)) > 0.5 * gap_) {
+    ++link_stats_.offset;
+    return false;
+  }
+  double d2 = 0;
+  index_->Nearest(0.5 * (pa + pb), &d2);
+  if (d2 > 0.36 * gap_ * gap_) {
+    ++link_stats_.continuity;
+    return false;
+  }
+  ++link_stats_.linked;
+  return true;
+}
+
+void CloudGrid::LinkNodes(const CloudGridOptions& options) {
+  const double cos_max = std::cos(options.max_link_angle_deg * kPi / 180.0);
+  const int nodes = num_nodes();
+  std::vector<std::pair<int, int>> pairs;
+  pairs.reserve(static_cast<size_t>(nodes) * 8);
+  for (int a = 0; a < nodes; ++a) {
+    const std::int64_t key = node_cell_[a];
+    const std::int64_t c[3] = {key % dims_[0], (key / dims_[0]) % dims_[1],
+                               key / (dims_[0] * dims_[1])};
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          // Each unordered pair of cells once: the 13 "forward" offsets.
+          if (dz < 0 || (dz == 0 && (dy < 0 || (dy == 0 && dx <= 0)))) continue;
+          const std::int64_t x = c[0] + dx, y = c[1] + dy, z = c[2] + dz;
+          if (x < 0 || y < 0 || z < 0 || x >= dims_[0] || y >= dims_[1] || z >= dims_[2])
+            continue;
+          const auto it = cells_.find(x + dims_[0] * (y + dims_[1] * z));
+          if (it == cells_.end()) continue;
+          for (int b = it->second.first; b < it->second.first + it->second.second; ++b)
+            if (Connected(a, b, cos_max)) pairs.emplace_back(a, b);
+        }
+  }
+  link_offsets_.assign(static_cast<size_t>(nodes) + 1, 0);
+  for (const auto& [a, b] : pairs) ++link_offsets_[a + 1], ++link_offsets_[b + 1];
+  for (int i = 0; i < nodes; ++i) link_offsets_[i + 1] += link_offsets_[i];
+  link_targets_.resize(pairs.size() * 2);
+  std::vector<int> fill(link_offsets_.begin(), link_offsets_.end() - 1);
+  for (const auto& [a, b] : pairs) {
+    link_targets_[fill[a]++] = b;
+    link_targets_[fill[b]++] = a;
+  }
+}
+
+int CloudGrid::LocateNode(const Eigen::Vector3d& x, double* distance_mm) const {
+  double d2 = 0;
+  const int point = index_->Nearest(x, &d2);
+  if (distance_mm) *distance_mm = std::sqrt(d2);
+  return point_node_[static_cast<size_t>(point)];
+}
+
+bool CloudGrid::Adjacent(int a, int b) const {
+  if (a == b) return true;
+  if (a < 0 || b < 0) return false;
+  for (const int* l = links_begin(a); l != links_end(a); ++l)
+    if (*l == b) return true;
+  for (const int* l = links_begin(a); l != links_end(a); ++l)
+    for (const int* k = links_begin(b); k != links_end(b); ++k)
+      if (*l == *k) return true;
+  return false;
+}
+
+int CloudGrid::WalkToNearest(const Eigen::Vector3d& x, int start) const {
+  int current = start;
+  for (int step = 0; step < 64; ++step) {
+    int best = current;
+    double best_d2 = (x - sites_[current]).squaredNorm();
+    for (const int* l = links_begin(current); l != links_end(current); ++l) {
+      const double d2 = (x - sites_[*l]).squaredNorm();
+      if (d2 < best_d2) best_d2 = d2, best = *l;
+    }
+    if (best == current) break;
+    current = best;
+  }
+  return current;
+}
+
+bool CloudGrid::PlaneAt(const Eigen::Vector3d& position, int* hint, TangentPlane* plane) const {
+  if (!position.allFinite()) return false;
+  *hint = (*hint >= 0 && *hint < num_nodes()) ? WalkToNearest(position, *hint)
+                                               : LocateNode(position);
+  const LocalSurface& nearest = surfaces_[static_cast<size_t>(*hint)];
+  *plane = nearest.PlaneAt(position);
+  if (blend_ <= 0) return true;
+  // Partition of unity over the nearest node and its linked neighbours.
+  const Eigen::Vector3d reference = plane->normal;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
+  double total = 0;
+  auto add = [&](int node) {
+    const double t2 = (position - sites_[static_cast<size_t>(node)]).squaredNorm() / (blend_ * blend_);
+    if (t2 >= 1) return;
+    const double w = (1 - t2) * (1 - t2);
+    const TangentPlane p = surfaces_[static_cast<size_t>(node)].PlaneAt(position);
+    point += w * p.point;
+    normal += (p.normal.dot(reference) < 0 ? -w : w) * p.normal;
+    total += w;
+  };
+  add(*hint);
+  for (const int* l = links_begin(*hint); l != links_end(*hint); ++l) add(*l);
+  if (total > 0 && normal.norm() > 0) {
+    plane->point = point / total;
+    plane->normal = normal.normalized();
+  }
+  return true;
+}
+
+std::int64_t CloudGrid::memory_bytes() const {
+  const auto n = static_cast<std::int64_t>(sites_.size());
+  return n * static_cast<std::int64_t>(sizeof(Eigen::Vector3d) + sizeof(LocalSurface) + 8 + 4) +
+         static_cast<std::int64_t>(cells_.size()) * 40 +
+         static_cast<std::int64_t>(link_targets_.size() + link_offsets_.size() +
+                                   node_points_.size() + point_node_.size()) * 4 +
+         index_->size() * 3 * 8 * 2;
+}
+
+}  // namespace bespoke

@@ -1,0 +1,126 @@
+// The regular grid over a point cloud that geodesics propagate on: thesis
+// Algorithm 4, with surface-aware cells and links.
+//
+// Input: scan points (#P x 3, mm, any frame). The bounding box is cut into
+// cubes of side cell_size_mm, addressed directly by Eq 3.19
+// (key = ix + nx * (iy + ny * iz)); only non-empty cells are stored (a hash map
+// from key to nodes, O(#cells) memory - never the dense nx*ny*nz array).
+// A cell's points are split into NODES, one per sheet of surface in the cell:
+// points closer than sheet_gap_mm are the same sheet, so an arm 15 mm from the
+// torso gives two nodes where a cell holds both. Each node has
+//   - a local surface fitted to the d = `neighbours` scan points nearest it
+//     (FLANN k-d tree), ignoring points off its own sheet;
+//   - a site: the mean of its points (the thesis's "destination") moved onto
+//     that surface.
+// Two nodes in neighbouring cells (26-neighbourhood) are LINKED only where the
+// surface connects them: normals within max_link_angle_deg, each site within
+// sheet_gap_mm / 2 of the other's surface, and the chord between the sites
+// within 0.6 * sheet_gap_mm of a scan point at its midpoint. Sheets separated
+// by an air gap wider than sheet_gap_mm are never linked, so geodesics go
+// around, never through the air. Holes smaller than about a cell are bridged.
+//
+// The grid is also the TangentPlaneSource of the curvature flow: a sample is
+// assigned to the nearest site reachable by links from its hint node, and
+// gets that node's surface's tangent plane.
+//
+// Throws InputError for bad options, fewer than 10 points, non-finite points,
+// or a grid with more than 2^60 cells (cell far too small for the extent).
+#ifndef BESPOKE_MEASURE_GEODESIC_CLOUD_GRID_H_
+#define BESPOKE_MEASURE_GEODESIC_CLOUD_GRID_H_
+
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include "measure/geodesic/local_surface.h"
+#include "measure/geodesic/point_index.h"
+#include "scanners/core/progress.h"
+
+namespace bespoke {
+
+struct CloudGridOptions {
+  double cell_size_mm = 0;         // grid interval; 0 (default) = auto_cell_spacings x spacing
+  double auto_cell_spacings = 3;   // default 3 median point spacings per cell side
+  int neighbours = 24;             // d, scan points per local fit; default 24
+  double sheet_gap_mm = 0;         // 0 (default) = 2.5 x median point spacing
+  double max_link_angle_deg = 60;  // default 60 degrees between linked normals
+  SurfaceFit fit = SurfaceFit::kQuadric;  // default quadric (kPlane: the thesis)
+  // Tangent planes blend the surfaces of the linked nodes whose sites lie
+  // within blend_cells cell sizes (smooth weights), instead of taking the
+  // nearest node's alone: no steps between neighbouring fits, which matters
+  // on noisy scans. 0 = nearest node only. Default 1.
+  double blend_cells = 1.0;
+  void Check() const;              // InputError when out of range
+};
+
+// Why candidate links between nodes of neighbouring cells were refused.
+struct LinkStats {
+  std::int64_t tested = 0, linked = 0;
+  std::int64_t angle = 0;       // normals disagree
+  std::int64_t offset = 0;      // a site is off the other's surface
+  std::int64_t continuity = 0;  // no scan point near the chord's midpoint
+};
+
+class CloudGrid : public TangentPlaneSource {
+ public:
+  CloudGrid(const CloudGridOptions& options, const Eigen::MatrixX3d& points,
+            Progress* progress = nullptr);
+  ~CloudGrid() override;
+
+  const PointIndex& index() const { return *index_; }
+  double spacing_mm() const { return spacing_; }      // median point spacing
+  double cell_size_mm() const { return cell_; }
+  double blend_radius_mm() const { return blend_; }
+  double sheet_gap_mm() const { return gap_; }
+  int num_cells() const { return static_cast<int>(cells_.size()); }
+  int num_nodes() const { return static_cast<int>(sites_.size()); }
+  std::int64_t num_links() const { return static_cast<std::int64_t>(link_targets_.size()) / 2; }
+
+  const Eigen::Vector3d& site(int node) const { return sites_[static_cast<size_t>(node)]; }
+  const LocalSurface& surface(int node) const { return surfaces_[static_cast<size_t>(node)]; }
+  const int* links_begin(int node) const { return link_targets_.data() + link_offsets_[node]; }
+  const int* links_end(int node) const { return link_targets_.data() + link_offsets_[node + 1]; }
+  int node_of_point(Eigen::Index point) const { return point_node_[static_cast<size_t>(point)]; }
+  const LinkStats& link_stats() const { return link_stats_; }
+  // Approximate bytes held by the grid (sites, surfaces, links, maps, index).
+  std::int64_t memory_bytes() const;
+
+  // The node of the scan point nearest `x`; the distance to that point in
+  // `*distance_mm` when not null.
+  int LocateNode(const Eigen::Vector3d& x, double* distance_mm = nullptr) const;
+  // True when `a` and `b` are the same node, linked, or both linked to a
+  // third node: consecutive samples of a path on the surface are.
+  bool Adjacent(int a, int b) const;
+  // From `start`, follows links to the node whose site is nearest `x`.
+  int WalkToNearest(const Eigen::Vector3d& x, int start) const;
+
+  bool PlaneAt(const Eigen::Vector3d& position, int* hint,
+               TangentPlane* plane) const override;
+
+ private:
+  void BuildCells(const Eigen::MatrixX3d& points);
+  void FitNodes(const CloudGridOptions& options, const Eigen::MatrixX3d& points);
+  void LinkNodes(const CloudGridOptions& options);
+  bool Connected(int a, int b, double cos_max);
+  std::int64_t KeyOf(const Eigen::Vector3d& x) const;
+
+  std::unique_ptr<PointIndex> index_;
+  double spacing_ = 0, cell_ = 0, gap_ = 0, blend_ = 0;
+  Eigen::Vector3d min_ = Eigen::Vector3d::Zero();
+  std::int64_t dims_[3] = {0, 0, 0};
+  // cell key -> (first node, node count); nodes of a cell are contiguous.
+  std::unordered_map<std::int64_t, std::pair<int, int>> cells_;
+  std::vector<std::int64_t> node_cell_;       // key per node
+  std::vector<int> node_point_offsets_;       // CSR into node_points_
+  std::vector<int> node_points_;              // point indices grouped by node
+  std::vector<int> point_node_;               // #P
+  std::vector<Eigen::Vector3d> sites_;
+  std::vector<LocalSurface> surfaces_;
+  std::vector<int> link_offsets_, link_targets_;  // CSR adjacency
+  LinkStats link_stats_;
+};
+
+}  // namespace bespoke
+
+#endif  // BESPOKE_MEASURE_GEODESIC_CLOUD_GRID_H_
