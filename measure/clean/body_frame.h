@@ -1,0 +1,83 @@
+// The body frame of a cleaned scan of a standing person.
+//
+// Body frame (docs/contracts.md): millimetres, +z up, feet on z = 0, origin
+// centred between the feet, the person faces +y, so their right is +x.
+// Computed from the cleaned points (scanner frame, mm):
+//
+//  up    The floor's normal when a floor was found (measure/clean/floor.h).
+//        Otherwise the major principal axis of the points (a standing body
+//        is longest head to feet), signed by comparing the two ends: the
+//        convex-hull area of the lowest `end_fraction` of the body (two feet
+//        with toes and heels) is 3-6 times that of the top (the crown of
+//        the head); a ratio below `min_end_area_ratio` is flagged
+//        `up_uncertain`. Fails for a person with arms raised above the head
+//        or a crouching person.
+//  z = 0 The floor plane, else the lowest body point (the soles are never
+//        scanned, so this is the lower rim of the feet's sides; a few mm).
+//  x     Left-right: the major horizontal principal axis of the body between
+//        35 % and 80 % of its height (hips, torso and arms are wider than
+//        deep). Ratio of horizontal variances below 1.15 is flagged
+//        `lateral_axis_uncertain`.
+//  +y    Which way the person faces, from the feet: each foot's footprint
+//        (points below `foot_fraction` of the height) reaches far ahead of
+//        the shin above it (toes) and little behind (heel), so the centre of
+//        the footprint lies 50-90 mm in front of the centre of the shin's
+//        section. Trusted when both feet agree and the mean offset is at
+//        least `min_foot_offset_mm`. Otherwise the head decides: the face
+//        lies ahead of the neck, so the head's section between the mouth and
+//        the eyes is centred ahead of the narrowest section of the neck;
+//        flag `front_from_head`. When neither cue is clear the result is
+//        flagged `front_uncertain` (the larger cue still picks the sign).
+//        Cues that disagree are flagged `front_cues_disagree`.
+//        Fails for feet hidden by long garments or cut off by the floor band,
+//        feet turned out by 90 degrees, or a scan of the upper body only.
+//  +x    = +y x +z: the person's right.
+//  origin The midpoint between the centres of the two footprints (the
+//        centre of the single footprint when the feet touch), on z = 0.
+#ifndef BESPOKE_MEASURE_CLEAN_BODY_FRAME_H_
+#define BESPOKE_MEASURE_CLEAN_BODY_FRAME_H_
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "measure/clean/floor.h"
+
+namespace bespoke {
+
+struct BodyFrameOptions {
+  double end_fraction = 0.04;        // of the length, per end, for the up sign. Default 0.04.
+  double min_end_area_ratio = 1.5;   // feet/head hull areas for a sure up sign. Default 1.5.
+  double foot_fraction = 0.035;      // of the height: the footprint band. Default 0.035 (~60 mm).
+  double shin_low_fraction = 0.07;   // shin band, from. Default 0.07 (~120 mm).
+  double shin_high_fraction = 0.13;  // shin band, to. Default 0.13 (~230 mm).
+  double min_foot_offset_mm = 20.0;  // footprint ahead of the shins. Default 20 mm.
+  double min_head_offset_mm = 10.0;  // face ahead of the neck. Default 10 mm.
+  // Throws InputError when a value is out of range.
+  void Check() const;
+};
+
+struct BodyFrame {
+  Eigen::Isometry3d body_from_scanner = Eigen::Isometry3d::Identity();  // rigid, mm
+  std::string up_source;            // "floor" or "principal_axis"
+  double end_area_ratio = 0.0;      // feet/head hull area (principal-axis up; also with a floor)
+  double lateral_ratio = 0.0;       // major/minor horizontal variance
+  std::string front_source;         // "feet", "head" or "none"
+  double foot_offset_mm = 0.0;      // footprint centre ahead of the shin (mean of both feet), +y
+  int feet_found = 0;               // 0, 1 or 2 sides with footprint and shin points
+  double head_offset_mm = 0.0;      // head section centre ahead of the neck, +y
+  double height_mm = 0.0;           // top of the body above z = 0
+  std::vector<std::string> flags;   // see above; empty when every cue was clear
+};
+
+// points: #P x 3, scanner frame, mm, cleaned (a single standing person);
+// floor: the floor plane when one was found. Throws InputError when there
+// are fewer than 100 points or the body is shorter than 300 mm.
+BodyFrame EstimateBodyFrame(const BodyFrameOptions& options, const Eigen::MatrixX3d& points,
+                            const std::optional<FloorPlane>& floor);
+
+}  // namespace bespoke
+
+#endif  // BESPOKE_MEASURE_CLEAN_BODY_FRAME_H_
