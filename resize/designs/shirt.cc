@@ -115,7 +115,9 @@ Body DraftBody(const ShirtInput& in) {
                          V(p32.x() + 0.5 * (p36.x() - p32.x()), p36.y()), p36, 6));
   f.Add(p36, "front_hem_mid", "", true);
   f.Add(edge_hem, "front_edge_hem", "", true);
-  f.AddLineTo(edge_top, 3);
+  f.Add(V(edge_top.x(), y2), "front_edge_waist", "front_waist_point");
+  f.Add(V(edge_top.x(), y1), "front_edge_chest");
+  f.Add(V(edge_top.x(), 0.5 * (y1 + edge_top.y())));
   f.Add(edge_top, "front_edge_top", "", true);
   f.Add(p21, "cf_neck", "front_neck_point", true);
   f.AddCurve(SampleCubic(p21, V(p21.x() - 0.45 * (p21.x() - p20.x()), p21.y()),
@@ -263,8 +265,14 @@ void AddShirtBindings(Pattern* p) {
   bind("armhole", "armhole_length", {term("back", "back_underarm", "back_shoulder", O, 1),
                                      term("front", "front_shoulder", "front_underarm", O, 1)});
   bind("shirt_length", "waist_to_hip", {term("back", "cb_waist", "cb_hem", S, 1)});
-  bind("sleeve", "arm_length", {term("sleeve", "crown_top", "hem_mid", S, 1),
-                                term("cuff", "seam_start", "edge_start", S, 1)});
+  // The front's balance: Aldrich drafts front and back on the same scye,
+  // waist and hem lines, so the front's neck-to-waist length follows the
+  // natural waist length too (a tailor's "front balance"), measured down the
+  // front edge (a straight vertical line, so the binding fixes the length).
+  bind("front_balance", "back_length",
+       {term("front", "front_edge_top", "front_edge_waist", S, 1)});
+  bind("front_hem", "waist_to_hip", {term("front", "front_edge_hem", "front_edge_waist", S, 1)});
+  bind("sleeve", "arm_length", {term("sleeve", "crown_top", "hem_mid", S, 1)});
   bind("cuff", "wrist_girth", {term("cuff", "seam_start", "seam_end", S, 1)});
 }
 

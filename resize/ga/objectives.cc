@@ -9,6 +9,7 @@ namespace {
 
 constexpr double kDeg = 180.0 / M_PI;
 
+
 double Turning(const Outline& o, const std::vector<int>& idx, size_t k) {
   const Eigen::Vector2d a = o.row(idx[k]) - o.row(idx[k - 1]);
   const Eigen::Vector2d b = o.row(idx[k + 1]) - o.row(idx[k]);
@@ -35,7 +36,16 @@ FitnessModel::FitnessModel(const Pattern& base, const BlockSet& blocks,
     : base_(base), blocks_(blocks) {
   for (const MeasurementBinding& b : base.bindings)
     targets_.push_back(body.at(b.measurement) + b.ease_mm);
-  for (const Piece& piece : base.pieces) base_turning_.push_back(TurningAngles(piece.outline));
+  for (const Piece& piece : base.pieces) {
+    base_turning_.push_back(TurningAngles(piece.outline));
+    const Eigen::Index n = piece.outline.rows();
+    Eigen::VectorXd direction(n);
+    for (Eigen::Index v = 0; v < n; ++v) {
+      const Eigen::Vector2d e = piece.outline.row((v + 1) % n) - piece.outline.row(v);
+      direction[v] = std::atan2(e.y(), e.x());
+    }
+    base_direction_.push_back(direction);
+  }
   for (const Seam& seam : base.seams) {
     SeamData d;
     d.piece_a = base.FindPiece(seam.a.piece);
@@ -176,9 +186,15 @@ void FitnessModel::Residuals(const Eigen::VectorXd& genes, double angle_scale_mm
     }
   }
   for (size_t p = 0; p < outlines.size(); ++p) {
-    const Eigen::VectorXd turning = TurningAngles(outlines[p]);
-    for (Eigen::Index v = 0; v < turning.size(); ++v)
-      s.push_back(WrapAngle(turning[v] - base_turning_[p][v]) * angle_scale_mm);
+    // Edge directions, not just turning angles: a straight fold or hem line
+    // must not tilt as a whole either (a pure turning-angle penalty lets a
+    // CB fold line rotate, which no cutter would accept).
+    const Outline& o = outlines[p];
+    const Eigen::Index n = o.rows();
+    for (Eigen::Index v = 0; v < n; ++v) {
+      const Eigen::Vector2d e = o.row((v + 1) % n) - o.row(v);
+      s.push_back(WrapAngle(std::atan2(e.y(), e.x()) - base_direction_[p][v]) * angle_scale_mm);
+    }
   }
   *constraints = Eigen::Map<Eigen::VectorXd>(c.data(), static_cast<Eigen::Index>(c.size()));
   *soft = Eigen::Map<Eigen::VectorXd>(s.data(), static_cast<Eigen::Index>(s.size()));

@@ -52,8 +52,9 @@ class FitnessModel {
 
   // For the polish: hard constraints (binding errors, seam length
   // mismatches; mm) and soft residuals (turning-angle changes at every outline
-  // vertex scaled by `angle_scale_mm` per radian, paired-edge differences in
-  // mm, paired seam-angle differences scaled likewise).
+  // edge's direction change scaled by `angle_scale_mm` per radian (keeps
+  // inner angles and the piece's orientation to the grain), paired-edge
+  // differences in mm, paired seam-angle differences scaled likewise).
   void Residuals(const Eigen::VectorXd& genes, double angle_scale_mm, Eigen::VectorXd* constraints,
                  Eigen::VectorXd* soft) const;
 
@@ -76,7 +77,8 @@ class FitnessModel {
   BlockSet blocks_;
   std::vector<double> targets_;
   std::vector<SeamData> seams_;
-  std::vector<Eigen::VectorXd> base_turning_;  // per piece, radians
+  std::vector<Eigen::VectorXd> base_turning_;    // per piece, radians
+  std::vector<Eigen::VectorXd> base_direction_;  // per piece, edge directions, radians
 };
 
 }  // namespace bespoke

@@ -79,46 +79,53 @@ PolishReport Polish(const PolishOptions& o, const FitnessModel& model, Eigen::Ve
   report.max_constraint_after_mm = report.max_constraint_before_mm;
   if (current.c.size() == 0) return report;
   const Eigen::Index n = x.size(), m = current.c.size(), k = current.s.size();
+  double last_step = 0;
   for (int it = 0; it < o.max_iterations; ++it) {
     report.iterations = it + 1;
-    // Jacobians by central differences, one column per control coordinate.
+    // Jacobians by forward differences, one column per control coordinate.
     Eigen::MatrixXd jc(m, n), js(k, n);
-    const double h = 1e-4;
+    const double h = 1e-5;
     tbb::parallel_for(Eigen::Index(0), n, [&](Eigen::Index j) {
-      Eigen::VectorXd xp = x, xm = x;
+      Eigen::VectorXd xp = x;
       xp[j] += h;
-      xm[j] -= h;
-      const Eval ep = Residuals(model, o, xp, gaps0), em = Residuals(model, o, xm, gaps0);
-      jc.col(j) = (ep.c - em.c) / (2 * h);
-      js.col(j) = (ep.s - em.s) / (2 * h);
+      const Eval ep = Residuals(model, o, xp, gaps0);
+      jc.col(j) = (ep.c - current.c) / h;
+      js.col(j) = (ep.s - current.s) / h;
     });
     // KKT system of: min |s + Js d|^2 + mu |x + d - x0|^2  s.t.  c + Jc d = 0.
-    Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(n + m, n + m);
-    kkt.topLeftCorner(n, n) = js.transpose() * js;
-    kkt.topLeftCorner(n, n).diagonal().array() += o.regularisation;
-    kkt.topRightCorner(n, m) = jc.transpose();
-    kkt.bottomLeftCorner(m, n) = jc;
-    kkt.bottomRightCorner(m, m).diagonal().array() -= 1e-9;  // tolerate redundant constraints
+    // When no step length is accepted (merit, ordering, self-intersection),
+    // the step is recomputed with Levenberg-Marquardt damping added.
+    const Eigen::MatrixXd jtj = js.transpose() * js;
     Eigen::VectorXd rhs(n + m);
     rhs.head(n) = -(js.transpose() * current.s + o.regularisation * (x - x0));
     rhs.tail(m) = -current.c;
-    Eigen::VectorXd step = kkt.partialPivLu().solve(rhs).head(n);
-    if (!step.allFinite()) step = kkt.fullPivLu().solve(rhs).head(n);
-    if (!step.allFinite()) break;
     const double merit = Merit(current, x, x0, o);
     bool accepted = false;
-    for (double alpha = 1.0; alpha > 1e-3 && !accepted; alpha *= 0.5) {
-      const Eigen::VectorXd trial = x + alpha * step;
-      const Eval e = Residuals(model, o, trial, gaps0);
-      if (Merit(e, trial, x0, o) < merit && Valid(model, o, trial)) {
-        x = trial;
-        current = e;
-        accepted = true;
+    for (double damping : {0.0, 1e-2, 1.0, 1e2, 1e4}) {
+      Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(n + m, n + m);
+      kkt.topLeftCorner(n, n) = jtj;
+      kkt.topLeftCorner(n, n).diagonal().array() += o.regularisation + damping;
+      kkt.topRightCorner(n, m) = jc.transpose();
+      kkt.bottomLeftCorner(m, n) = jc;
+      kkt.bottomRightCorner(m, m).diagonal().array() -= 1e-9;  // redundant constraints
+      Eigen::VectorXd step = kkt.partialPivLu().solve(rhs).head(n);
+      if (!step.allFinite()) step = kkt.fullPivLu().solve(rhs).head(n);
+      if (!step.allFinite()) continue;
+      for (double alpha = 1.0; alpha > 1e-3 && !accepted; alpha *= 0.5) {
+        const Eigen::VectorXd trial = x + alpha * step;
+        const Eval e = Residuals(model, o, trial, gaps0);
+        if (Merit(e, trial, x0, o) < merit && Valid(model, o, trial)) {
+          last_step = (alpha * step).cwiseAbs().maxCoeff();
+          x = trial;
+          current = e;
+          accepted = true;
+        }
       }
+      if (accepted) break;
     }
     if (!accepted) break;
     report.max_constraint_after_mm = current.c.cwiseAbs().maxCoeff();
-    if (report.max_constraint_after_mm < o.tolerance_mm && step.cwiseAbs().maxCoeff() < 1e-3)
+    if (report.max_constraint_after_mm < o.tolerance_mm && last_step < 1e-3)
       break;
   }
   report.max_constraint_after_mm = current.c.cwiseAbs().maxCoeff();

@@ -7,7 +7,7 @@
 // where constraints are every binding's error and every seam's total length
 // mismatch (mm) and soft residuals are the shape and paired-seam terms of
 // FitnessModel::Residuals. Each step solves the KKT system of the linearised
-// problem (Jacobians by central differences); steps are halved until the
+// problem (Jacobians by forward differences); steps are halved until the
 // merit |soft|^2 + rho |constraints|^2 falls and the grid stays ordered and
 // no outline self-intersects. Stops when the largest constraint is below
 // `tolerance_mm` and the step is tiny, or after `max_iterations`.
@@ -21,7 +21,7 @@
 namespace bespoke {
 
 struct PolishOptions {
-  int max_iterations = 30;        // default 30
+  int max_iterations = 60;        // default 60
   double tolerance_mm = 0.01;     // constraint tolerance (mm). Default 0.01 mm.
   double angle_scale_mm = 100;    // mm per radian of turning-angle change. Default 100.
   double regularisation = 1e-4;   // mu, keeps unused control points put. Default 1e-4.

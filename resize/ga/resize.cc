@@ -238,7 +238,26 @@ ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& base,
   result.ga_objectives = model.Evaluate(genes, true);
   const auto ga_end = std::chrono::steady_clock::now();
   result.ga_time_s = std::chrono::duration<double>(ga_end - start).count();
-  if (options.polish) result.polish = Polish(options.polish_options, model, &genes);
+  if (options.polish) {
+    // Deviation: the polish also starts from the proportional seed, and the
+    // result that meets the constraints with the least critical-point angle
+    // change is kept (result.polish_start says which start won).
+    Eigen::VectorXd from_seed = seed;
+    const PolishReport ga_report = Polish(options.polish_options, model, &genes);
+    const PolishReport seed_report = Polish(options.polish_options, model, &from_seed);
+    const Objectives a = model.Evaluate(genes, true), b = model.Evaluate(from_seed, true);
+    auto score = [&](const Objectives& o, const PolishReport& r) {
+      const bool ok = o.simple && r.max_constraint_after_mm <= options.tolerance_mm;
+      return std::make_pair(ok ? 0 : 1, ok ? o.critical_shape_deg : r.max_constraint_after_mm);
+    };
+    result.polish = ga_report;
+    result.polish_start = "ga";
+    if (score(b, seed_report) < score(a, ga_report)) {
+      genes = from_seed;
+      result.polish = seed_report;
+      result.polish_start = "seed";
+    }
+  }
   result.polish_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - ga_end).count();
   result.objectives = model.Evaluate(genes, true);
