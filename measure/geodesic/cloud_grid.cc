@@ -183,7 +183,10 @@ bool CloudGrid::Connected(int a, int b, double cos_max) {
     ++link_stats_.angle;
     return false;
   }
-  if (std::abs(sa.Offset(pb)) > 0.5 * gap_ || std::abs(sb.Offset(pa)) > 0.5 * gap_) {
+  // Each site on the other's surface. Across a gap both offsets are about
+  // the gap; round a tight fold one fit may extrapolate badly but the other
+  // still holds, hence the smaller of the two.
+  if (std::min(std::abs(sa.Offset(pb)), std::abs(sb.Offset(pa))) > 0.5 * gap_) {
     ++link_stats_.offset;
     return false;
   }

@@ -42,7 +42,7 @@ namespace bespoke {
 struct CloudGridOptions {
   double cell_size_mm = 0;         // grid interval; 0 (default) = auto_cell_spacings x spacing
   double auto_cell_spacings = 3;   // default 3 median point spacings per cell side
-  int neighbours = 24;             // d, scan points per local fit; default 24
+  int neighbours = 32;             // d, scan points per local fit; default 32
   double sheet_gap_mm = 0;         // 0 (default) = 2.5 x median point spacing
   double max_link_angle_deg = 60;  // default 60 degrees between linked normals
   SurfaceFit fit = SurfaceFit::kQuadric;  // default quadric (kPlane: the thesis)

@@ -19,13 +19,23 @@ void PropagationOptions::Check() const {
     throw InputError("propagation: band_cells must be >= 0");
   if (!(tie_cells >= 0) || !std::isfinite(tie_cells))
     throw InputError("propagation: tie_cells must be >= 0");
-  flow.Check();
+  if (flow_iterations < 1) throw InputError("propagation: flow_iterations must be >= 1");
+  if (!(flow_tolerance_cells > 0) || !std::isfinite(flow_tolerance_cells))
+    throw InputError("propagation: flow_tolerance_cells must be > 0");
+  if (!(replan_cells >= 0) || !std::isfinite(replan_cells))
+    throw InputError("propagation: replan_cells must be >= 0");
+  if (!(max_step_segments > 0) || !std::isfinite(max_step_segments))
+    throw InputError("propagation: max_step_segments must be > 0");
 }
 
 Propagation::Propagation(const PropagationOptions& options, const CloudGrid& grid,
                          const Eigen::Vector3d& source, int source_node)
     : options_(options), grid_(grid), source_(source), source_node_(source_node) {
   options_.Check();
+  flow_.max_iterations = options_.flow_iterations;
+  flow_.tolerance_mm = options_.flow_tolerance_cells * grid.cell_size_mm();
+  flow_.replan_distance_mm = options_.replan_cells * grid.cell_size_mm();
+  flow_.max_step_segments = options_.max_step_segments;
   const int n = grid.num_nodes();
   if (source_node < 0 || source_node >= n)
     throw InputError("propagation: source node " + std::to_string(source_node) + " out of range");
@@ -150,7 +160,7 @@ void Propagation::Settle(int node, int parent) {
     const std::vector<int> inherited_hints = hints;
     const std::vector<TangentPlane> inherited_planes = planes;
     const CurvatureFlowReport report =
-        FlowPolyline(options_.flow, grid_, &window, &hints, &planes);
+        FlowPolyline(flow_, grid_, &window, &hints, &planes);
     ++stats_.flows;
     stats_.flow_iterations += report.iterations;
     if (!report.converged) ++stats_.unconverged;

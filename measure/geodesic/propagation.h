@@ -50,9 +50,12 @@ struct PropagationOptions {
                               // thesis's r_max = largest held-back estimate. Default 0.5
   ParentRule parent_rule = ParentRule::kPredicted;  // default kPredicted
   double tie_cells = 0.05;    // kPredicted: distance ties within this many cells; default 0.05
-  // Per node: at most 10 iterations to 0.005 mm; planes re-estimated after a
-  // sample slid 0.1 mm (replan_distance_mm).
-  CurvatureFlowOptions flow = {10, 0.005, 1.0, 0.1};
+  // The flow run for each new node, in units of the grid's cell size so that
+  // one setting suits bodies in mm and small objects alike:
+  int flow_iterations = 10;           // at most this many iterations; default 10
+  double flow_tolerance_cells = 0.002;  // converged below this move; default 0.002 cells
+  double replan_cells = 0.1;          // planes re-estimated after a slide of 0.1 cells
+  double max_step_segments = 1.0;     // trust region, see CurvatureFlowOptions; default 1
   void Check() const;         // InputError when out of range
 };
 
@@ -107,6 +110,7 @@ class Propagation {
              const std::vector<TangentPlane>& planes);
 
   PropagationOptions options_;
+  CurvatureFlowOptions flow_;  // options_ in mm for this grid
   const CloudGrid& grid_;
   Eigen::Vector3d source_;
   int source_node_;

@@ -1,0 +1,119 @@
+// Near-touching surfaces: an arm held 10-20 mm from the torso must not be
+// "linked" to it; geodesics go around over the surface, never through air.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "measure/geodesic/cloud_geodesics.h"
+#include "measure/geodesic/testing/sampled_surfaces.h"
+#include "scanners/core/errors.h"
+
+namespace bespoke {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Two plates 15 mm apart joined along one edge by a half tube: the only way
+// from one plate to the other is round the fold.
+TEST(NearSurfaces, FoldedSheetIsCrossedAroundTheFoldNotThroughTheGap) {
+  const double gap = 15;
+  const Eigen::MatrixX3d cloud = testing::SampleFold({2.0, 0.0, 21}, gap, 150, 60);
+  CloudGeodesics geodesics({}, cloud);
+  const double x_pairs[][2] = {{100, 100}, {30, 120}, {5, 5}};
+  for (const auto& x : x_pairs) {
+    const Eigen::Vector3d a(x[0], 10, 0), b(x[1], 10, gap);
+    const double exact = x[0] + kPi * gap / 2 + x[1];
+    const CloudGeodesicPath path = geodesics.Between(a, b);
+    EXPECT_NEAR(path.length_mm, exact, 0.01 * exact) << x[0] << " " << x[1];
+    EXPECT_FALSE(path.polish_rejected);
+    // Every segment stays on the sheet: no chord across the 15 mm gap.
+    for (Eigen::Index i = 1; i < path.points.rows(); ++i)
+      EXPECT_LT((path.points.row(i) - path.points.row(i - 1)).norm(), 0.75 * gap) << i;
+  }
+  // The whole field agrees: points on the upper plate are at least as far as
+  // the way round the fold.
+  const CloudDistanceField field = geodesics.DistancesFrom(Eigen::Vector3d(100, 0, 0));
+  int upper = 0;
+  for (Eigen::Index i = 0; i < cloud.rows(); ++i) {
+    if (cloud(i, 2) < gap - 1 || cloud(i, 0) < 1) continue;
+    const double around = 100 + kPi * gap / 2 + cloud(i, 0);
+    EXPECT_GT(field.point_distance_mm[i], 0.98 * around) << cloud.row(i);
+    ++upper;
+  }
+  EXPECT_GT(upper, 1000);
+}
+
+// Coarser cells (8 mm, so cells on the two plates are neighbours across the
+// 15 mm gap): the fold's radius (7.5 mm) is below a cell and is resolved only
+// roughly, but no path is ever shorter than the way round. With the sheet
+// safeguards disabled (a 30 mm sheet gap) the same grid jumps straight across.
+TEST(NearSurfaces, CoarseCellsNeverJumpTheGap) {
+  const double gap = 15;
+  const Eigen::MatrixX3d cloud = testing::SampleFold({2.0, 0.0, 21}, gap, 150, 60);
+  CloudGeodesicsOptions options;
+  options.grid.cell_size_mm = 8;
+  CloudGeodesics safe(options, cloud);
+  options.grid.sheet_gap_mm = 30;
+  CloudGeodesics naive(options, cloud);
+  for (const double x : {100.0, 30.0}) {
+    const Eigen::Vector3d a(x, 10, 0), b(x, 10, gap);
+    const double around = 2 * x + kPi * gap / 2;
+    EXPECT_GT(safe.Between(a, b).length_mm, 0.99 * around) << x;
+    EXPECT_LT(naive.Between(a, b).length_mm, 1.01 * gap) << x;  // through the air
+  }
+}
+
+// An arm (radius 40) beside a torso (radius 110), 15 mm of air between them,
+// not connected: nothing on one is reachable from the other, and paths on the
+// arm's facing side stay on the arm.
+TEST(NearSurfaces, ArmBesideTorsoStaysSeparate) {
+  const double arm_r = 40, torso_r = 110, gap = 15;
+  Eigen::MatrixX3d torso = testing::SampleCylinder({2.0, 0.0, 31}, torso_r, 300);
+  torso.col(0).array() += arm_r + gap + torso_r;
+  const Eigen::MatrixX3d arm = testing::SampleCylinder({2.0, 0.0, 32}, arm_r, 300);
+  const Eigen::MatrixX3d cloud = testing::Concatenate(arm, torso);
+  CloudGeodesics geodesics({}, cloud);
+
+  // Along the facing line of the arm, and across it on the arm.
+  const CloudGeodesicPath along =
+      geodesics.Between(Eigen::Vector3d(arm_r, 0, 40), Eigen::Vector3d(arm_r, 0, 260));
+  EXPECT_NEAR(along.length_mm, 220, 0.005 * 220);
+  const double a = 0.6;
+  const Eigen::Vector3d p(arm_r * std::cos(a), arm_r * std::sin(a), 100);
+  const Eigen::Vector3d q(arm_r * std::cos(-a), arm_r * std::sin(-a), 180);
+  const double exact = std::hypot(2 * a * arm_r, 80.0);
+  EXPECT_NEAR(geodesics.Between(p, q).length_mm, exact, 0.005 * exact);
+
+  // Arm to torso: no surface path.
+  EXPECT_THROW(geodesics.Between(Eigen::Vector3d(arm_r, 0, 150),
+                                 Eigen::Vector3d(arm_r + gap, 0, 150)),
+               InputError);
+  const CloudDistanceField field = geodesics.DistancesFrom(Eigen::Vector3d(arm_r, 0, 150));
+  for (Eigen::Index i = 0; i < cloud.rows(); ++i) {
+    if (i < arm.rows())
+      EXPECT_TRUE(std::isfinite(field.point_distance_mm[i])) << i;
+    else
+      ASSERT_FALSE(std::isfinite(field.point_distance_mm[i])) << cloud.row(i);
+  }
+}
+
+// Two parallel plates 12 mm apart: every cell that straddles both holds two
+// nodes, one per sheet, and no link joins them.
+TEST(NearSurfaces, CellsHoldOneNodePerSheet) {
+  Eigen::MatrixX3d upper = testing::SamplePlane({2.0, 0.0, 41}, 60);
+  upper.col(2).array() += 12;
+  const Eigen::MatrixX3d cloud =
+      testing::Concatenate(testing::SamplePlane({2.0, 0.0, 42}, 60), upper);
+  CloudGridOptions options;
+  options.cell_size_mm = 20;  // large cells, so each holds both plates
+  const CloudGrid grid(options, cloud);
+  EXPECT_GT(grid.num_nodes(), grid.num_cells());
+  for (int node = 0; node < grid.num_nodes(); ++node) {
+    const bool low = grid.site(node).z() < 6;
+    for (const int* l = grid.links_begin(node); l != grid.links_end(node); ++l)
+      EXPECT_EQ(grid.site(*l).z() < 6, low) << node << " - " << *l;
+  }
+}
+
+}  // namespace
+}  // namespace bespoke
