@@ -71,6 +71,7 @@ Piece PieceBuilder::Build() {
   std::sort(critical_.begin(), critical_.end());
   critical_.erase(std::unique(critical_.begin(), critical_.end()), critical_.end());
   piece.critical = critical_;
+  std::sort(piece.notches.begin(), piece.notches.end());
   BESPOKE_CHECK(SignedArea(piece.outline) > 0, "drafted piece " + piece.name + " is clockwise");
   return piece;
 }

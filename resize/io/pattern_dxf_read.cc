@@ -164,6 +164,7 @@ Piece BuildPiece(const RawBlock& block, const Insert& insert, double unit,
   piece.outline = Clean(pts);
   if (SignedArea(piece.outline) < 0) piece.outline = piece.outline.colwise().reverse().eval();
   std::set<int> notches;
+  bool named = false;
   for (const Entity& e : block.entities) {
     if (&e == sew || &e == cut) continue;
     const Eigen::Vector2d p0 = place({Get(e, 10, 0, what), Get(e, 20, 0, what)});
@@ -185,7 +186,10 @@ Piece BuildPiece(const RawBlock& block, const Insert& insert, double unit,
       piece.grain_end = p1;
     } else if (e.type == "TEXT" && e.layer == "1") {
       const std::string text = GetText(e, 1);
-      if (text.rfind("Cut ", 0) == 0) {
+      if (text.rfind("Cut ", 0) != 0 && !named && !text.empty()) {
+        piece.name = text;  // the readable name Valentina and we write first
+        named = true;
+      } else if (text.rfind("Cut ", 0) == 0) {
         try {
           piece.cut_count = std::max(1, std::stoi(text.substr(4)));
         } catch (const std::exception&) {
@@ -236,7 +240,9 @@ Pattern PatternFromDxf(const std::string& text, const std::string& what) {
     if (block.name.empty() || block.name[0] == '*' || block.name[0] == '$') continue;
     if (block.entities.empty()) continue;
     const auto it = inserts.find(block.name);
-    pattern.pieces.push_back(BuildPiece(block, it == inserts.end() ? Insert{} : it->second, unit, what));
+    Piece piece = BuildPiece(block, it == inserts.end() ? Insert{} : it->second, unit, what);
+    if (pattern.FindPiece(piece.name) >= 0) piece.name = block.name;  // keep names unique
+    pattern.pieces.push_back(std::move(piece));
   }
   if (pattern.pieces.empty()) throw InputError(what + ": no pattern pieces (BLOCKs) found");
   ValidatePattern(pattern, what);
