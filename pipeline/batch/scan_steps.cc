@@ -4,6 +4,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "measure/clean/clean.h"
+#include "measure/clean/clean_json.h"
 #include "scanners/core/json_io.h"
 #include "scanners/core/units.h"
 #include "scanners/io/scan_io.h"
@@ -38,6 +40,33 @@ void Read(JobState& s) {
   s.scan_mm = std::move(scan.cloud);
 }
 
+// measure/clean: the cleaning chain with its documented defaults; the cloud
+// in the body frame (mm) and the report (settings, per-stage counts, transform).
+void Clean(JobState& s) {
+  CleanOptions options;
+  options.threads = s.options->threads;
+  CleanResult r = CleanScan(options, *s.scan_mm, s.progress);
+  if (s.options->write_cleaned_cloud) {
+    WriteOptions w;
+    w.comment = "bespoke cleaned scan; units mm; frame body (z up, feet at z = 0, facing +y)";
+    WriteScan(w, r.cloud, s.out_dir / "cleaned.ply");
+    s.AddOutput("cleaned.ply");
+  }
+  WriteJsonFile(s.out_dir / "clean_report.json",
+                {{"format", "bespoke-clean-report"}, {"version", 1}, {"input", s.scan_file.string()},
+                 {"units", "mm"}, {"settings", ToJson(options)}, {"result", ToJson(r)}});
+  s.AddOutput("clean_report.json");
+  std::string flags;
+  for (const std::string& f : r.flags) flags += (flags.empty() ? "" : ";") + f;
+  s.SetResult("points_cleaned", static_cast<std::int64_t>(r.cloud.size()));
+  s.SetResult("clean_flags", flags);
+  spdlog::info("clean: {} -> {} points in the body frame{}", s.scan_mm->size(), r.cloud.size(),
+               flags.empty() ? "" : " (flags: " + flags + ")");
+  s.body_from_scanner = Eigen::Affine3d(r.body_from_scanner.matrix());
+  s.body_cloud = std::move(r.cloud);
+  s.scan_mm.reset();  // the raw cloud is no longer needed: free its memory
+}
+
 const char* NeedsScan(const JobState& s) {
   return s.scan_mm ? nullptr : "needs the scan (read step skipped)";
 }
@@ -58,8 +87,7 @@ void JobState::AddOutput(const std::string& relative) {
 const std::vector<ScanStep>& ScanSteps() {
   static const std::vector<ScanStep> steps = {
       {"read", &Read, nullptr, nullptr},
-      {"clean", nullptr, "cleaning and the body frame (measure/clean, issue 2) are not in this build yet",
-       &NeedsScan},
+      {"clean", &Clean, nullptr, &NeedsScan},
       {"measure", nullptr, "landmarks and measurements (bespoke measure, issue 5) are not in this build yet",
        &NeedsBodyCloud},
       {"resize", nullptr, "pattern resizing (bespoke resize, issue 6) is not in this build yet",
