@@ -38,7 +38,8 @@ MappedFile::MappedFile(const std::filesystem::path& file) {
     Fail(file, "file is empty");
   }
   size_ = static_cast<std::size_t>(st.st_size);
-  void* map = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, fd, 0);
+  // MAP_POPULATE: fault the pages in one go (the readers touch every byte).
+  void* map = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
   const int err = errno;
   ::close(fd);
   if (map == MAP_FAILED) Fail(file, std::string("cannot read: ") + std::strerror(err));
@@ -82,6 +83,10 @@ std::size_t Tokenize(std::string_view line, std::vector<std::string_view>* token
     tokens->push_back(line.substr(start, i - start));
   }
   return tokens->size();
+}
+
+std::string_view StripBom(std::string_view text) {
+  return text.substr(0, 3) == "\xEF\xBB\xBF" ? text.substr(3) : text;
 }
 
 std::string_view Trim(std::string_view line) {
@@ -177,7 +182,31 @@ T Saturate(double value) {
   return static_cast<T>(std::llround(value));
 }
 
+template <typename T>
+void ConvertAll(const char* src, std::int64_t stride, bool big_endian, std::int64_t count,
+                double* dst) {
+  if (big_endian && sizeof(T) > 1) {
+    for (std::int64_t i = 0; i < count; ++i) dst[i] = Load<T>(src + i * stride, true);
+  } else {
+    for (std::int64_t i = 0; i < count; ++i) dst[i] = Load<T>(src + i * stride, false);
+  }
+}
+
 }  // namespace
+
+void ConvertColumn(const char* src, std::int64_t stride, ScalarType type, bool big_endian,
+                   std::int64_t count, double* dst) {
+  switch (type) {
+    case ScalarType::kInt8: return ConvertAll<std::int8_t>(src, stride, false, count, dst);
+    case ScalarType::kUint8: return ConvertAll<std::uint8_t>(src, stride, false, count, dst);
+    case ScalarType::kInt16: return ConvertAll<std::int16_t>(src, stride, big_endian, count, dst);
+    case ScalarType::kUint16: return ConvertAll<std::uint16_t>(src, stride, big_endian, count, dst);
+    case ScalarType::kInt32: return ConvertAll<std::int32_t>(src, stride, big_endian, count, dst);
+    case ScalarType::kUint32: return ConvertAll<std::uint32_t>(src, stride, big_endian, count, dst);
+    case ScalarType::kFloat32: return ConvertAll<float>(src, stride, big_endian, count, dst);
+    case ScalarType::kFloat64: return ConvertAll<double>(src, stride, big_endian, count, dst);
+  }
+}
 
 double LoadScalar(const char* p, ScalarType type, bool big_endian) {
   switch (type) {

@@ -67,6 +67,9 @@ class LineCursor {
 std::size_t Tokenize(std::string_view line, std::vector<std::string_view>* tokens,
                      std::string_view extra_separators = {});
 
+// `text` without a leading UTF-8 byte order mark (Windows text exports).
+std::string_view StripBom(std::string_view text);
+
 // `line` with leading and trailing whitespace (space, tab, \r, \v, \f) removed.
 std::string_view Trim(std::string_view line);
 
@@ -90,6 +93,12 @@ double LoadScalar(const char* p, ScalarType type, bool big_endian);
 // `value` rounded to float precision without undefined behaviour: values
 // beyond the float range become +-inf (then dropped as non-finite points).
 float SafeFloat(double value);
+
+// Converts `count` values of `type` at src, src + stride, src + 2 * stride, ...
+// into dst[0], dst[1], ... (a tight loop per type; the caller checked that
+// (count - 1) * stride + SizeOf(type) bytes are readable).
+void ConvertColumn(const char* src, std::int64_t stride, ScalarType type, bool big_endian,
+                   std::int64_t count, double* dst);
 
 // Reads an unsigned little-endian 32-bit value (4 readable bytes at `p`).
 std::uint32_t LoadUint32Le(const char* p);

@@ -27,7 +27,7 @@ class ObjParser {
  public:
   ObjParser(const ReadOptions& options, const std::filesystem::path& file,
             std::string_view bytes)
-      : options_(options), file_(file), lines_(bytes) {}
+      : options_(options), file_(file), lines_(StripBom(bytes)) {}
 
   RawScan Parse() {
     std::string_view line;

@@ -60,7 +60,7 @@ FileFormat DetectFormat(const std::filesystem::path& file, std::string_view byte
   std::string_view first;
   lines.Next(&first);
   if (io::Trim(first) == "ply") return FileFormat::kPly;
-  const std::string_view token = FirstToken(bytes);
+  const std::string_view token = FirstToken(io::StripBom(bytes));
   if (token == "VERSION" || token == "FIELDS") return FileFormat::kPcd;
   if (IsOffKeyword(token)) return FileFormat::kOff;
   if (io::LooksLikeBinaryStl(bytes)) return FileFormat::kStl;

@@ -38,7 +38,8 @@ struct ReadOptions {
   // The file's length unit; nullopt (default) guesses it from the extent.
   std::optional<LengthUnit> units;
   // Files claiming more points/vertices/faces than this are rejected before
-  // anything is allocated. Default 50 million.
+  // anything is allocated. Default 50 million; at most 2^31 - 1 (face
+  // indices are int).
   std::int64_t max_elements = 50'000'000;
   // A cloud with fewer finite points than this is not a body scan: InputError.
   // Default 1000. Set to 0 for non-body data (tests, patches).

@@ -120,7 +120,8 @@ RawScan Assemble(const std::filesystem::path& file, std::vector<std::string> nam
 
 RawScan ReadXyz(const ReadOptions& options, const std::filesystem::path& file,
                 std::string_view bytes) {
-  LineCursor lines(bytes);
+  const std::string_view text_bytes = StripBom(bytes);
+  LineCursor lines(text_bytes, bytes.size() - text_bytes.size());
   std::string_view line;
   std::vector<std::string_view> tokens;
   std::vector<std::string> names;

@@ -53,6 +53,9 @@ TEST(XyzRead, CsvHeaderNamesColumnsInAnyOrder) {
   EXPECT_EQ(scan.cloud.colors(1, 1), 128);
   EXPECT_EQ(scan.cloud.scalars.at("Intensity")[1], 0.25);
   EXPECT_EQ(scan.report.fields.front(), "Intensity");
+  // A byte order mark (Windows exports) before the header is ignored.
+  const Scan bom = Read(dir, "bom.csv", "\xEF\xBB\xBFx,y,z\n1,2,3\n");
+  EXPECT_EQ(bom.cloud.points.row(0), Eigen::RowVector3d(1, 2, 3));
 }
 
 TEST(XyzRead, CloudCompareHeaderUnitColoursAndPtsCount) {
