@@ -1,0 +1,38 @@
+// The resize report: per measurement target vs achieved, per seam the length
+// mismatch, per piece the shape change, the objective values as thesis Table
+// 4.2 lists them (GA pick, after the polish, proportional seed), timings; as
+// JSON, as a readable text summary, and the Pareto front as CSV.
+#ifndef BESPOKE_RESIZE_GA_REPORT_H_
+#define BESPOKE_RESIZE_GA_REPORT_H_
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "resize/ga/resize.h"
+
+namespace bespoke {
+
+// Per-piece shape change of `fitted` against `base` (same vertex counts).
+struct PieceShapeChange {
+  std::string piece;
+  double mean_angle_change_deg = 0;      // over all outline vertices
+  double max_angle_change_deg = 0;
+  double critical_angle_change_deg = 0;  // mean over critical points
+  double area_ratio = 1;                 // fitted area / base area
+  double width_mm = 0, height_mm = 0;    // fitted bounding box
+};
+std::vector<PieceShapeChange> ShapeChanges(const Pattern& base, const Pattern& fitted);
+
+nlohmann::json ObjectivesJson(const Objectives& o);
+
+// The full report. `settings` is stored as given (the options used).
+nlohmann::json ResizeReportJson(const Pattern& base, const MeasurementSet& body,
+                                const ResizeResult& result, const nlohmann::json& settings);
+std::string ResizeReportText(const nlohmann::json& report);
+
+// One row per first-front member: measurement_mm,seam,shape_deg,...
+std::string ParetoFrontCsv(const ResizeResult& result);
+
+}  // namespace bespoke
+
+#endif  // BESPOKE_RESIZE_GA_REPORT_H_

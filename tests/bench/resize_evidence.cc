@@ -1,0 +1,81 @@
+// Evidence run for issue 6: bodies far from the standard size, each resized
+// from the standard-size design and compared with the design drafted directly
+// for that body and with plain proportional grading (resize/ga/evidence.h).
+// Prints a Markdown table and a summary line; exit code 1 when any body
+// misses a check (binding or seam beyond 1 mm, a self-intersecting outline,
+// or the GA not closer to the direct draft than grading is, by mean distance).
+//
+//   resize_evidence [--design shirt|trousers|both] [--bodies 20] [--population 400]
+//                   [--generations 200] [--truth-dir DIR]
+// With --truth-dir, the bodies are DIR/subject_*/truth.json (from
+// `bespoke synth-set`, measurements in the contracts.md schema); without it,
+// generated measurement sets (resize/designs/body_variants.h).
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "resize/designs/body_variants.h"
+#include "resize/designs/designs.h"
+#include "resize/ga/evidence.h"
+#include "scanners/core/errors.h"
+
+int main(int argc, char** argv) {
+  using namespace bespoke;
+  ResizeOptions options;
+  int count = 20;
+  std::string which = "both";
+  std::filesystem::path truth_dir;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--population")) options.population = std::stoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--generations")) options.generations = std::stoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--bodies")) count = std::stoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--design")) which = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--truth-dir")) truth_dir = argv[i + 1];
+  }
+  std::vector<std::filesystem::path> truths;
+  if (!truth_dir.empty()) {
+    for (const auto& entry : std::filesystem::directory_iterator(truth_dir))
+      if (std::filesystem::exists(entry.path() / "truth.json")) truths.push_back(entry.path() / "truth.json");
+    std::sort(truths.begin(), truths.end());
+    if (static_cast<int>(truths.size()) > count) truths.resize(count);
+    count = static_cast<int>(truths.size());
+  }
+  int failures = 0, rows = 0;
+  std::printf("| design | body | worst binding mm | worst seam mm | simple | shape deg | "
+              "GA-draft mean/max mm | grading-draft mean/max mm | grading worst binding mm | polish from | s |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const std::string& design : DesignNames()) {
+    if (which != "both" && which != design) continue;
+    for (int b = 0; b < count; ++b) {
+      MeasurementSet body;
+      std::string name;
+      if (truths.empty()) {
+        body = VariedMeasurements(design, 100 + b);
+        name = "gen-" + std::to_string(100 + b);
+      } else {
+        const MeasurementSet all = ReadMeasurements(truths[b]);
+        for (const auto& [m, v] : BaseMeasurements(design)) {
+          if (!all.count(m)) throw InputError(truths[b], "has no '" + m + "'");
+          body[m] = all.at(m);
+        }
+        name = truths[b].parent_path().filename().string();
+      }
+      const FitEvidence e = EvaluateFit(options, design, body);
+      const bool ok = e.max_binding_error_mm <= 1 && e.max_seam_mismatch_mm <= 1 &&
+                      e.outlines_simple && e.ga_to_draft.mean_mm < e.grading_to_draft.mean_mm;
+      failures += ok ? 0 : 1;
+      ++rows;
+      std::printf("| %s | %s | %.3f | %.3f | %s | %.3f | %.1f / %.1f | %.1f / %.1f | %.1f | %s | %.2f |%s\n",
+                  design.c_str(), name.c_str(), e.max_binding_error_mm, e.max_seam_mismatch_mm,
+                  e.outlines_simple ? "yes" : "NO", e.shape_deg, e.ga_to_draft.mean_mm,
+                  e.ga_to_draft.max_mm, e.grading_to_draft.mean_mm, e.grading_to_draft.max_mm,
+                  e.grading_max_binding_error_mm, e.polish_start.c_str(), e.time_s,
+                  ok ? "" : " **miss**");
+      std::fflush(stdout);
+    }
+  }
+  std::printf("\n%d passed, %d failed\n", rows - failures, failures);
+  return failures == 0 ? 0 : 1;
+}
