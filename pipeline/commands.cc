@@ -10,6 +10,8 @@ CommandRunner SetupInfoCommand(CLI::App& app);
 CommandRunner SetupRunCommand(CLI::App& app);
 CommandRunner SetupBatchCommand(CLI::App& app);
 CommandRunner SetupBatchMergeCommand(CLI::App& app);
+CommandRunner SetupResizeCommand(CLI::App& app);
+CommandRunner SetupDraftCommand(CLI::App& app);
 
 const std::vector<Command>& AllCommands() {
   static const std::vector<Command> commands = {
@@ -23,6 +25,10 @@ const std::vector<Command>& AllCommands() {
        &SetupBatchCommand},
       {"batch-merge", "Merge the shards of a batch (e.g. a Slurm job array) into one report",
        &SetupBatchMergeCommand},
+      {"resize", "Fit a sewing pattern to a body's measurements (multi-objective GA, thesis ch. 4)",
+       &SetupResizeCommand},
+      {"draft", "Draft a built-in design (shirt, trousers) directly for a body's measurements",
+       &SetupDraftCommand},
   };
   return commands;
 }
