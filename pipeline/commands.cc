@@ -12,6 +12,7 @@ CommandRunner SetupBatchCommand(CLI::App& app);
 CommandRunner SetupBatchMergeCommand(CLI::App& app);
 CommandRunner SetupResizeCommand(CLI::App& app);
 CommandRunner SetupDraftCommand(CLI::App& app);
+CommandRunner SetupScanSimCommand(CLI::App& app);
 
 const std::vector<Command>& AllCommands() {
   static const std::vector<Command> commands = {
@@ -29,6 +30,8 @@ const std::vector<Command>& AllCommands() {
        &SetupResizeCommand},
       {"draft", "Draft a built-in design (shirt, trousers) directly for a body's measurements",
        &SetupDraftCommand},
+      {"scan-sim", "Simulate a body-scanner booth: a realistic noisy scan of a body mesh (+ its truth)",
+       &SetupScanSimCommand},
   };
   return commands;
 }

@@ -73,7 +73,7 @@ struct ParametricBodyOptions {
   // --- resolution ---
   int torso_segments = 192;        // vertices around each torso ring (multiple of 8, >= 64)
   int arm_segments = 112;          // vertices around each arm ring (multiple of 4, >= 48)
-  double ring_spacing_mm = 10;     // target distance between rings (mm, 2-40)
+  double ring_spacing_mm = 20;     // target distance between rings (mm, 2-40); ~46k vertices by default
   double max_girth_deficit_mm = 0.1;  // ring polygon vs analytic perimeter; InternalError above
   std::uint64_t drawn_from_seed = 0;  // set by SeededOptions (reporting only)
 
