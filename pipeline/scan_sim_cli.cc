@@ -14,7 +14,7 @@ std::pair<int, int> ParsePair(const std::string& text, const std::string& option
   char tail = 0;
   if (std::sscanf(text.c_str(), "%dx%d%c", &a, &b, &tail) == 2 && a > 0 && b > 0) return {a, b};
   if (single_ok && std::sscanf(text.c_str(), "%d%c", &a, &tail) == 1 && a > 0) return {a, 1};
-  throw InputError(option + " must look like " + (single_ok ? "6x7 or 16" : "160x120") + ", not '" + text + "'");
+  throw InputError(option + " must look like " + (single_ok ? "6x7 or 16" : "240x180") + ", not '" + text + "'");
 }
 
 }  // namespace
@@ -56,7 +56,7 @@ void AddScanSimOptions(CLI::App& app, ScanSimCli* cli, bool seed_option) {
   if (seed_option) app.add_option("--seed", cli->seed, "Seed of everything random in the scan (default 1)");
   app.add_option("--noise-mm", cli->noise_mm, "Range noise SD along each ray, mm (default 1)");
   app.add_option("--sensors", cli->sensors, "Booth: DIRECTIONSxHEIGHTS sensors, or N columns of 1 (default 6x7)");
-  app.add_option("--resolution", cli->resolution, "Depth image per sensor, WIDTHxHEIGHT px (default 160x120)");
+  app.add_option("--resolution", cli->resolution, "Depth image per sensor, WIDTHxHEIGHT px (default 240x180)");
   app.add_option("--outliers", cli->outliers, "Fraction of outlier points in the output (default 0.02)");
   app.add_flag("--floor,!--no-floor", cli->floor, "Scan a floor patch around the feet (default on)");
   app.add_option("--stray-objects", cli->stray_objects, "Poles and boxes standing in the booth (default 0)");

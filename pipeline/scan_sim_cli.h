@@ -20,7 +20,7 @@ struct ScanSimCli {
   std::uint64_t seed = 1;            // --seed
   double noise_mm = 1.0;             // --noise-mm
   std::string sensors = "6x7";       // --sensors DIRECTIONSxHEIGHTS, or N (N directions x 1 height)
-  std::string resolution = "160x120";  // --resolution WIDTHxHEIGHT pixels per sensor
+  std::string resolution = "240x180";  // --resolution WIDTHxHEIGHT pixels per sensor
   double outliers = 0.02;            // --outliers (fraction of the output)
   bool floor = true;                 // --floor / --no-floor
   int stray_objects = 0;             // --stray-objects

@@ -3,7 +3,7 @@
 // vertical axis (x = y = 0 of the body frame).
 //
 // Defaults model a commercial booth of the kind shops use: 6 columns x 7
-// heights (42 sensors) 1.1 m from the subject, 160 x 120 px depth images with
+// heights (42 sensors) 1.1 m from the subject, 240 x 180 px depth images with
 // a 62 x 48 deg field of view, 0.3-2.5 m working range. With a 1 mm range
 // noise this gives a 300-500 thousand point scan of an adult (measured in
 // docs/oracle.md). Positions in mm, body frame.
@@ -25,8 +25,8 @@ struct BoothOptions {
   double azimuth_offset_deg = 0;   // turns the whole booth about the axis (+ = counter-clockwise from above)
   double aim_low_mm = 250;         // each sensor aims at the axis at its own height,
   double aim_high_mm = 1550;       //   clamped to [aim_low_mm, aim_high_mm] (top sensors look down)
-  int width_px = 160;              // depth image size
-  int height_px = 120;
+  int width_px = 240;              // depth image size
+  int height_px = 180;
   double fov_horizontal_deg = 62;  // field of view (pinhole), 5-150
   double fov_vertical_deg = 48;
   double min_range_mm = 300;       // returns outside [min, max] range are dropped

@@ -65,8 +65,9 @@ struct Collected {
   }
 };
 
-// Outliers: half flying pixels (a recorded return moved along its sensor's
-// ray), half clutter uniform in the booth volume, facing a random sensor.
+// Outliers: 80 % flying pixels (a recorded return moved along its sensor's
+// ray by 30-300 mm, as at depth edges and on dark surfaces), 20 % clutter
+// uniform in the booth volume, facing a random sensor.
 void AddOutliers(const ScanSimOptions& o, const std::vector<DepthSensor>& sensors, Collected* c) {
   const size_t good = c->points.size();
   if (o.outlier_fraction <= 0 || good == 0) return;
@@ -77,7 +78,7 @@ void AddOutliers(const ScanSimOptions& o, const std::vector<DepthSensor>& sensor
   std::uniform_real_distribution<double> unit(0, 1);
   const double r = o.booth.radius_mm * 0.8;
   for (size_t i = 0; i < count; ++i) {
-    if (i % 2 == 0) {
+    if (i % 5 != 4) {  // four in five: flying pixels
       const size_t j = pick(rng);
       const int k = c->sensor[j];
       const Eigen::Vector3d eye = sensors[static_cast<size_t>(k)].position();

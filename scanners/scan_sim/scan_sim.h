@@ -12,15 +12,15 @@
 //    outside the sensor's range are dropped;
 //  - misalignment: each sensor's true pose differs from its calibrated pose
 //    by a random rigid error; points are reported with the calibrated pose;
-//  - outliers: flying pixels (moved along their ray by 30-300 mm) and
-//    uniform clutter in the booth, outlier_fraction of the output;
+//  - outliers: 80 % flying pixels (moved along their ray by 30-300 mm),
+//    20 % clutter uniform in the booth; outlier_fraction of the output;
 //  - normals: the hit face's normal, turned towards the sensor (outliers:
 //    towards their sensor);
 //  - finally the rigid scanner_from_body is applied (none, random, y-up).
 // Output units stay mm; a writer may scale to metres (cmd_scan_sim.cc).
 //
 // Failure: InputError for bad options or an empty mesh. Cost: one ray per
-// pixel (806,400 for the default booth), about a second on two cores.
+// pixel (1,814,400 for the default booth); see docs/oracle.md for timings.
 #ifndef BESPOKE_SCANNERS_SCAN_SIM_SCAN_SIM_H_
 #define BESPOKE_SCANNERS_SCAN_SIM_SCAN_SIM_H_
 
@@ -45,7 +45,7 @@ struct ScanSimOptions {
   double outlier_fraction = 0.02;   // share of output points that are outliers (0-0.5)
   double min_incidence_cos = 0.1;   // drop returns hitting the surface more obliquely (0-0.99)
   bool floor = true;                // a square floor patch on z = 0 around the feet
-  double floor_half_size_mm = 800;  // half the side of the floor patch
+  double floor_half_size_mm = 450;  // half the side of the floor patch
   int stray_objects = 0;            // poles and boxes standing in the booth (0-8)
   double misalign_mm = 0;           // per-sensor translation error SD, each axis (0-100)
   double misalign_deg = 0;          // per-sensor rotation error SD (0-10)
