@@ -5,8 +5,9 @@
 // writes pattern.json, pattern.svg (1:1 mm), pattern.dxf (ASTM layers) and
 // draft.json (the measurements used and every binding's value). Without
 // --measurements the design's standard size is drafted.
-#include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
 
 #include "pipeline/commands.h"
 #include "resize/designs/designs.h"
@@ -42,7 +43,8 @@ int RunDraft(const DraftCommandOptions& o) {
     for (auto& [name, value] : body) {
       const auto it = read.find(name);
       if (it == read.end())
-        throw InputError(o.measurements, "design " + o.design + " needs measurement '" + name + "'");
+        throw InputError(o.measurements,
+                         "design " + o.design + " needs measurement '" + name + "'");
       value = it->second;
     }
   }
@@ -57,13 +59,17 @@ int RunDraft(const DraftCommandOptions& o) {
   WritePatternDxf(dxf, pattern, o.out_dir / "pattern.dxf");
   nlohmann::json bindings = nlohmann::json::array();
   for (const MeasurementBinding& b : pattern.bindings)
-    bindings.push_back({{"binding", b.id}, {"measurement", b.measurement},
-                        {"body_mm", body.at(b.measurement)}, {"ease_mm", b.ease_mm},
+    bindings.push_back({{"binding", b.id},
+                        {"measurement", b.measurement},
+                        {"body_mm", body.at(b.measurement)},
+                        {"ease_mm", b.ease_mm},
                         {"pattern_mm", BindingValue(pattern, b)}});
-  WriteJsonFile(o.out_dir / "draft.json",
-                {{"design", o.design}, {"source", pattern.source},
-                 {"measurements", o.measurements.string()}, {"body", body},
-                 {"bindings", bindings}, {"seam_allowance_mm", o.seam_allowance_mm}});
+  WriteJsonFile(o.out_dir / "draft.json", {{"design", o.design},
+                                           {"source", pattern.source},
+                                           {"measurements", o.measurements.string()},
+                                           {"body", body},
+                                           {"bindings", bindings},
+                                           {"seam_allowance_mm", o.seam_allowance_mm}});
   spdlog::info("drafted {} ({} pieces) into {}", o.design, pattern.pieces.size(),
                o.out_dir.string());
   return 0;
@@ -74,7 +80,8 @@ int RunDraft(const DraftCommandOptions& o) {
 CommandRunner SetupDraftCommand(CLI::App& app) {
   auto o = std::make_shared<DraftCommandOptions>();
   app.add_option("--design", o->design, "shirt or trousers")->required();
-  app.add_option("--measurements", o->measurements, "MEAS.json or TRUTH.json (default: standard size)");
+  app.add_option("--measurements", o->measurements,
+                 "MEAS.json or TRUTH.json (default: standard size)");
   app.add_option("-o,--out", o->out_dir, "Output folder")->required();
   app.add_option("--seam-allowance", o->seam_allowance_mm, "Cut-line allowance in SVG/DXF (mm)");
   return [o](const GlobalOptions&) { return RunDraft(*o); };

@@ -10,9 +10,9 @@
 // file (the last two need --sidecar for landmarks, seams and bindings).
 // Bad input (unknown or missing measurement names, missing bindings, seams of
 // different point counts, self-intersecting outlines) is an InputError (exit 1).
-#include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 
 #include "pipeline/commands.h"
@@ -39,7 +39,7 @@ struct ResizeCommandOptions {
   std::filesystem::path measurements;  // MEAS.json / TRUTH.json
   std::filesystem::path out_dir;
   ResizeOptions resize;
-  double seam_allowance_mm = 10;       // SVG/DXF cut lines
+  double seam_allowance_mm = 10;  // SVG/DXF cut lines
   bool no_polish = false;
 
   void Check() const {
@@ -90,14 +90,19 @@ int RunResize(const ResizeCommandOptions& o, const GlobalOptions& global) {
   ProgressBar bar(global.quiet);
   const ResizeResult result = ResizePattern(options, base, body, &bar);
 
-  const nlohmann::json settings = {
-      {"pattern", o.pattern.string()},   {"design", o.design},
-      {"sidecar", o.sidecar.string()},   {"measurements", o.measurements.string()},
-      {"seed", options.seed},            {"population", options.population},
-      {"generations", options.generations}, {"crossover_rate", options.crossover_rate},
-      {"mutation_rate", options.mutation_rate}, {"mutation_rate_step", options.mutation_rate_step},
-      {"polish", options.polish},        {"tolerance_mm", options.tolerance_mm},
-      {"seam_allowance_mm", o.seam_allowance_mm}};
+  const nlohmann::json settings = {{"pattern", o.pattern.string()},
+                                   {"design", o.design},
+                                   {"sidecar", o.sidecar.string()},
+                                   {"measurements", o.measurements.string()},
+                                   {"seed", options.seed},
+                                   {"population", options.population},
+                                   {"generations", options.generations},
+                                   {"crossover_rate", options.crossover_rate},
+                                   {"mutation_rate", options.mutation_rate},
+                                   {"mutation_rate_step", options.mutation_rate_step},
+                                   {"polish", options.polish},
+                                   {"tolerance_mm", options.tolerance_mm},
+                                   {"seam_allowance_mm", o.seam_allowance_mm}};
   const nlohmann::json report = ResizeReportJson(base, body, result, settings);
   WritePatternJson(result.fitted, o.out_dir / "fitted.json");
   SvgOptions svg;
@@ -110,11 +115,11 @@ int RunResize(const ResizeCommandOptions& o, const GlobalOptions& global) {
   WriteJsonFile(o.out_dir / "report.json", report);
   WriteFileAtomically(o.out_dir / "report.txt", ResizeReportText(report));
   WriteConvergence(result, o.out_dir / "convergence.png");
-  spdlog::info("fitted '{}' in {:.2f} s: worst binding error {:.3f} mm, worst seam mismatch "
-               "{:.3f} mm; wrote {}",
-               base.name, result.ga_time_s + result.polish_time_s,
-               result.objectives.max_measurement_mm, result.objectives.max_seam_length_mm,
-               o.out_dir.string());
+  spdlog::info(
+      "fitted '{}' in {:.2f} s: worst binding error {:.3f} mm, worst seam mismatch "
+      "{:.3f} mm; wrote {}",
+      base.name, result.ga_time_s + result.polish_time_s, result.objectives.max_measurement_mm,
+      result.objectives.max_seam_length_mm, o.out_dir.string());
   if (result.objectives.max_measurement_mm > options.tolerance_mm ||
       result.objectives.max_seam_length_mm > options.tolerance_mm)
     spdlog::warn("the fit misses the {:.1f} mm tolerance; see {}", options.tolerance_mm,

@@ -8,8 +8,7 @@ namespace bespoke {
 
 MeasurementSet VariedMeasurements(const std::string& design, std::uint64_t seed) {
   std::mt19937_64 rng(seed * 0x9E3779B97F4A7C15ull + 12345);
-  std::uniform_real_distribution<double> girth(0.85, 1.35), length(0.90, 1.12),
-      jitter(0.94, 1.06);
+  std::uniform_real_distribution<double> girth(0.85, 1.35), length(0.90, 1.12), jitter(0.94, 1.06);
   double g = girth(rng);
   while (g > 0.92 && g < 1.08) g = girth(rng);
   const double l = length(rng);

@@ -17,25 +17,24 @@ MeasurementSet BaseMeasurements(const std::string& design) {
             {"back_width", 390},   {"armhole_length", 460}, {"waist_to_hip", 200},
             {"arm_length", 640},   {"wrist_girth", 175}};
   if (design == "trousers")
-    return {{"waist_girth", 840},
-            {"hip_girth", 1000},
-            {"inside_leg", 810},
-            {"waist_height", 1060}};
+    return {{"waist_girth", 840}, {"hip_girth", 1000}, {"inside_leg", 810}, {"waist_height", 1060}};
   throw InputError("unknown design '" + design + "' (known: shirt, trousers)");
 }
 
 double Need(const MeasurementSet& m, const std::string& name, const std::string& design) {
   const auto it = m.find(name);
-  if (it == m.end())
-    throw InputError("design " + design + " needs measurement '" + name + "'");
+  if (it == m.end()) throw InputError("design " + design + " needs measurement '" + name + "'");
   return it->second;
 }
 
 Pattern DraftDesign(const std::string& design, const MeasurementSet& measurements) {
   Pattern pattern;
-  if (design == "shirt") pattern = DraftShirt(measurements);
-  else if (design == "trousers") pattern = DraftTrousers(measurements);
-  else throw InputError("unknown design '" + design + "' (known: shirt, trousers)");
+  if (design == "shirt")
+    pattern = DraftShirt(measurements);
+  else if (design == "trousers")
+    pattern = DraftTrousers(measurements);
+  else
+    throw InputError("unknown design '" + design + "' (known: shirt, trousers)");
   // Design ease: what the draft gives minus the body measurement; seam ease:
   // the drafted length difference (e.g. sleeve-head ease), so the draft meets
   // its own bindings and seams exactly.

@@ -24,8 +24,8 @@ class PieceBuilder {
   explicit PieceBuilder(std::string name) { piece_.name = std::move(name); }
 
   // Appends a vertex; a non-empty `landmark` names it (with the body `datum`).
-  int Add(const Eigen::Vector2d& p, const std::string& landmark = "",
-          const std::string& datum = "", bool critical = false);
+  int Add(const Eigen::Vector2d& p, const std::string& landmark = "", const std::string& datum = "",
+          bool critical = false);
   // Appends the points of a sampled curve; its first point is dropped when it
   // coincides with the last vertex, and its last point is dropped when
   // `skip_last` (it is added next by name).

@@ -54,28 +54,28 @@ struct Body {
 Body DraftBody(const ShirtInput& in) {
   // Body section, Aldrich steps 0-36 (back and front drafted side by side).
   const V p0(0, 0);
-  const double y1 = -(in.scye + 40);                     // 0-1 scye depth + 4 cm
-  const double y2 = -(in.nwl + 30);                      // 0-2 natural waist length + 3 cm
-  const double y3 = -(in.shirt_length + 80);             // 0-3 shirt length + 8 cm
-  const double x4 = in.chest / 2 + 120;                  // 1-4 half chest + 12 cm
-  const V p8(in.neck / 5 - 5, 45);                       // 0-7 neck/5 - 0.5; 7-8 4.5 cm up
-  const double y9 = -((in.scye + 40) / 5 + 20);          // 0-9 (0-1)/5 + 2 cm
-  const double x10 = in.half_back + 40;                  // 9-10 half back + 4 cm
-  const V p13(x10 + 7.5, 0);                             // 12-13 0.75 cm
-  const V p14(x10, y9 - 100), p15(x10 + 7.5, y9);        // 10-14 10 cm, 10-15 0.75 cm
-  const V p16(x4 / 2 + 5, y1);                           // 1-16 (1-4)/2 + 0.5 cm
-  const V p20(x4 - (in.neck / 5 - 10), -45);             // 5-19 4.5 cm; 19-20 neck/5 - 1
-  const V p21(x4, -45 - (in.neck / 5 - 25));             // 19-21 neck/5 - 2.5
-  const double y22 = y9 - 15;                            // 10-22 1.5 cm
-  const double shoulder = (p13 - p8).norm() + 5;         // 20-23 = 8-13 + 0.5 cm
+  const double y1 = -(in.scye + 40);               // 0-1 scye depth + 4 cm
+  const double y2 = -(in.nwl + 30);                // 0-2 natural waist length + 3 cm
+  const double y3 = -(in.shirt_length + 80);       // 0-3 shirt length + 8 cm
+  const double x4 = in.chest / 2 + 120;            // 1-4 half chest + 12 cm
+  const V p8(in.neck / 5 - 5, 45);                 // 0-7 neck/5 - 0.5; 7-8 4.5 cm up
+  const double y9 = -((in.scye + 40) / 5 + 20);    // 0-9 (0-1)/5 + 2 cm
+  const double x10 = in.half_back + 40;            // 9-10 half back + 4 cm
+  const V p13(x10 + 7.5, 0);                       // 12-13 0.75 cm
+  const V p14(x10, y9 - 100), p15(x10 + 7.5, y9);  // 10-14 10 cm, 10-15 0.75 cm
+  const V p16(x4 / 2 + 5, y1);                     // 1-16 (1-4)/2 + 0.5 cm
+  const V p20(x4 - (in.neck / 5 - 10), -45);       // 5-19 4.5 cm; 19-20 neck/5 - 1
+  const V p21(x4, -45 - (in.neck / 5 - 25));       // 19-21 neck/5 - 2.5
+  const double y22 = y9 - 15;                      // 10-22 1.5 cm
+  const double shoulder = (p13 - p8).norm() + 5;   // 20-23 = 8-13 + 0.5 cm
   const double dy = p20.y() - y22;
   const V p23(p20.x() - std::sqrt(std::max(shoulder * shoulder - dy * dy, 1.0)), y22);
   const V p25(in.chest / 3 + 45, y1 + 30);               // 1-24 chest/3 + 4.5; 24-25 3 cm
   const V p26 = Bulge(p23, p25, 0.5, -10);               // 23-26 half, curve in 1 cm
   const V p29(p16.x() - 20, y2), p30(p16.x() + 20, y2);  // 17-29, 17-30 2 cm
   const V p33(p16.x() - 10, y3 + 200), p32(p16.x() + 10, y3 + 200);  // 18-31 20 cm; 1 cm
-  const V p35(p16.x() / 2, y3);                          // 35 midway 3-18
-  const V p36((x4 + p16.x()) / 2, y3 + 40);              // 34 midway 6-18; 34-36 4 cm
+  const V p35(p16.x() / 2, y3);                                      // 35 midway 3-18
+  const V p36((x4 + p16.x()) / 2, y3 + 40);                          // 34 midway 6-18; 34-36 4 cm
   const V edge_hem(x4 + kStand, y3 + 40), edge_top(x4 + kStand, p21.y());
 
   Body body;
@@ -154,9 +154,9 @@ PieceBuilder DraftSleeve(const ShirtInput& in, double back_armhole, double front
   const V p5(-hem_half, -length), p6(hem_half, -length), p2(0, -length);
   PieceBuilder s("sleeve");
   s.Add(top, "crown_top", "shoulder_point", true);
-  s.AddCurve(SmoothCurve({top, Bulge(top, p3, 0.25, 15), Bulge(top, p3, 0.5, 5),
-                          Bulge(top, p3, 0.78, -5), p3},
-                         kArmholeSamples));
+  s.AddCurve(SmoothCurve(
+      {top, Bulge(top, p3, 0.25, 15), Bulge(top, p3, 0.5, 5), Bulge(top, p3, 0.78, -5), p3},
+      kArmholeSamples));
   s.Add(p3, "back_underarm", "armpit", true);
   s.Add((p3 + p5) / 2, "back_elbow");
   s.Add(p5, "back_hem", "", true);
@@ -164,9 +164,9 @@ PieceBuilder DraftSleeve(const ShirtInput& in, double back_armhole, double front
   s.Add(p6, "front_hem", "", true);
   s.Add((p4 + p6) / 2, "front_elbow");
   s.Add(p4, "front_underarm", "armpit", true);
-  s.AddCurve(SmoothCurve({p4, Bulge(p4, top, 0.22, -10), Bulge(p4, top, 0.5, 5),
-                          Bulge(p4, top, 0.75, 18), top},
-                         kArmholeSamples));
+  s.AddCurve(SmoothCurve(
+      {p4, Bulge(p4, top, 0.22, -10), Bulge(p4, top, 0.5, 5), Bulge(p4, top, 0.75, 18), top},
+      kArmholeSamples));
   s.MarkCritical(kArmholeSamples / 2);
   s.Notch(0);
   s.Grain(V(0, -crown - 40), V(0, -length + 60));
@@ -256,21 +256,23 @@ void AddShirtBindings(Pattern* p) {
     p->bindings.push_back(b);
   };
   const Path S = Path::kStraight, O = Path::kOutline;
-  bind("chest", "chest_girth", {term("back", "cb_chest", "back_underarm", S, 2),
-                                term("front", "front_underarm", "cf_chest", S, 2)});
-  bind("neck", "neck_girth", {term("back", "back_side_neck", "cb_neck", O, 2),
-                              term("front", "cf_neck", "front_side_neck", O, 2)});
+  bind("chest", "chest_girth",
+       {term("back", "cb_chest", "back_underarm", S, 2),
+        term("front", "front_underarm", "cf_chest", S, 2)});
+  bind("neck", "neck_girth",
+       {term("back", "back_side_neck", "cb_neck", O, 2),
+        term("front", "cf_neck", "front_side_neck", O, 2)});
   bind("back_length", "back_length", {term("back", "cb_neck", "cb_waist", S, 1)});
   bind("back_width", "back_width", {term("back", "cb_yoke", "back_shoulder", S, 2)});
-  bind("armhole", "armhole_length", {term("back", "back_underarm", "back_shoulder", O, 1),
-                                     term("front", "front_shoulder", "front_underarm", O, 1)});
+  bind("armhole", "armhole_length",
+       {term("back", "back_underarm", "back_shoulder", O, 1),
+        term("front", "front_shoulder", "front_underarm", O, 1)});
   bind("shirt_length", "waist_to_hip", {term("back", "cb_waist", "cb_hem", S, 1)});
   // The front's balance: Aldrich drafts front and back on the same scye,
   // waist and hem lines, so the front's neck-to-waist length follows the
   // natural waist length too (a tailor's "front balance"), measured down the
   // front edge (a straight vertical line, so the binding fixes the length).
-  bind("front_balance", "back_length",
-       {term("front", "front_edge_top", "front_edge_waist", S, 1)});
+  bind("front_balance", "back_length", {term("front", "front_edge_top", "front_edge_waist", S, 1)});
   bind("front_hem", "waist_to_hip", {term("front", "front_edge_hem", "front_edge_waist", S, 1)});
   bind("sleeve", "arm_length", {term("sleeve", "crown_top", "hem_mid", S, 1)});
   bind("cuff", "wrist_girth", {term("cuff", "seam_start", "seam_end", S, 1)});

@@ -36,10 +36,10 @@ TrouserLines Lines(double waist, double seat, double inside_leg, double waist_he
   t.seat = seat;
   t.rise = waist_height - inside_leg;
   t.leg = inside_leg;
-  t.y_crotch = -(t.rise + 10);                        // 0-1 body rise + 1 cm
-  t.y_seat = t.y_crotch + (t.rise + 10) / 4;          // seat line: quarter of 0-1 up
-  t.y_hem = t.y_crotch - (inside_leg - 30);           // hem 3 cm above the floor
-  t.y_knee = (t.y_crotch + t.y_hem) / 2 + 50;         // knee: half way + 5 cm
+  t.y_crotch = -(t.rise + 10);                 // 0-1 body rise + 1 cm
+  t.y_seat = t.y_crotch + (t.rise + 10) / 4;   // seat line: quarter of 0-1 up
+  t.y_hem = t.y_crotch - (inside_leg - 30);    // hem 3 cm above the floor
+  t.y_knee = (t.y_crotch + t.y_hem) / 2 + 50;  // knee: half way + 5 cm
   return t;
 }
 
@@ -49,8 +49,8 @@ V Bisector(const V& corner, const V& a, const V& b, double d) {
 
 PieceBuilder DraftFront(const TrouserLines& t) {
   // Side seam on the left (x = 0 at the seat line), centre front on the right.
-  const double seat_x = t.seat / 4 + 5;                 // quarter seat + ease
-  const double fork_x = seat_x + t.seat / 20 + 5;       // front fork extension
+  const double seat_x = t.seat / 4 + 5;            // quarter seat + ease
+  const double fork_x = seat_x + t.seat / 20 + 5;  // front fork extension
   const double crease = fork_x / 2;
   const V cf_waist(seat_x - 10, 0), side_waist(cf_waist.x() - (t.waist / 4 + 10), 0);
   const V side_seat(0, t.y_seat), side_crotch(2, t.y_crotch);
@@ -60,8 +60,8 @@ PieceBuilder DraftFront(const TrouserLines& t) {
   const V fork(fork_x, t.y_crotch), cf_seat(seat_x, t.y_seat);
   PieceBuilder f("front");
   f.Add(side_waist, "side_waist", "waist_side", true);
-  f.AddCurve(SmoothCurve({side_waist, V(side_waist.x() * 0.35, t.y_seat * 0.5), side_seat},
-                         kHipSamples));
+  f.AddCurve(
+      SmoothCurve({side_waist, V(side_waist.x() * 0.35, t.y_seat * 0.5), side_seat}, kHipSamples));
   f.Add(side_seat, "side_seat", "hip_side", true);
   f.Add(side_crotch, "side_crotch", "", true);
   f.Add(knee_out, "knee_out", "knee_side", true);
@@ -83,10 +83,10 @@ PieceBuilder DraftFront(const TrouserLines& t) {
 
 PieceBuilder DraftBack(const TrouserLines& t) {
   // Centre back on the left (x = 0 at the seat line), side seam on the right.
-  const double seat_x = t.seat / 4 + 20;                // quarter seat + ease
-  const double fork_x = -(t.seat / 10 + 10);            // back fork extension
+  const double seat_x = t.seat / 4 + 20;      // quarter seat + ease
+  const double fork_x = -(t.seat / 10 + 10);  // back fork extension
   const double crease = (fork_x + seat_x) / 2;
-  const V cb_waist(40, 20);                             // CB raised 2 cm, sloped 4 cm
+  const V cb_waist(40, 20);  // CB raised 2 cm, sloped 4 cm
   const double w = t.waist / 4 + 10;
   const V side_waist(cb_waist.x() + std::sqrt(w * w - 20.0 * 20.0), 0);
   const V cb_seat(0, t.y_seat), fork(fork_x, t.y_crotch - 10);
@@ -107,10 +107,10 @@ PieceBuilder DraftBack(const TrouserLines& t) {
   b.Add(knee_out, "knee_out", "knee_side", true);
   b.Add(side_crotch, "side_crotch", "", true);
   b.Add(side_seat, "side_seat", "hip_side", true);
-  b.AddCurve(SmoothCurve({side_seat, V(side_seat.x() + (side_waist.x() - side_seat.x()) * 0.35 + 4,
-                                       t.y_seat * 0.5),
-                          side_waist},
-                         kHipSamples));
+  b.AddCurve(SmoothCurve(
+      {side_seat, V(side_seat.x() + (side_waist.x() - side_seat.x()) * 0.35 + 4, t.y_seat * 0.5),
+       side_waist},
+      kHipSamples));
   b.Add(side_waist, "side_waist", "waist_side", true);
   b.Notch(b.Index("side_seat"));
   b.Notch(b.Index("knee_in"));
@@ -186,10 +186,11 @@ Pattern DraftTrousers(const MeasurementSet& m) {
     p.bindings.push_back(b);
   };
   const Path S = Path::kStraight, O = Path::kOutline;
-  bind("waist", "waist_girth", {term("front", "cf_waist", "side_waist", O, 2),
-                                term("back", "side_waist", "cb_waist", O, 2)});
-  bind("seat", "hip_girth", {term("front", "side_seat", "cf_seat", S, 2),
-                             term("back", "cb_seat", "side_seat", S, 2)});
+  bind("waist", "waist_girth",
+       {term("front", "cf_waist", "side_waist", O, 2),
+        term("back", "side_waist", "cb_waist", O, 2)});
+  bind("seat", "hip_girth",
+       {term("front", "side_seat", "cf_seat", S, 2), term("back", "cb_seat", "side_seat", S, 2)});
   bind("inside_leg", "inside_leg", {term("front", "hem_in", "fork", O, 1)});
   bind("side_length", "waist_height", {term("front", "side_waist", "hem_out", S, 1)});
   return p;

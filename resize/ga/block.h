@@ -25,13 +25,13 @@ struct GridParam {
 };
 
 struct Block {
-  int nu = 0, nv = 0;                   // control points along x (columns) and y (rows)
-  int offset = 0;                       // index of this block's first gene
-  std::vector<GridParam> outline;       // one per outline vertex
-  std::vector<GridParam> inside;        // one per landmark (used for inside landmarks)
-  std::vector<GridParam> grain;         // 0 or 2 (start, end)
+  int nu = 0, nv = 0;              // control points along x (columns) and y (rows)
+  int offset = 0;                  // index of this block's first gene
+  std::vector<GridParam> outline;  // one per outline vertex
+  std::vector<GridParam> inside;   // one per landmark (used for inside landmarks)
+  std::vector<GridParam> grain;    // 0 or 2 (start, end)
   std::vector<std::vector<GridParam>> internal_lines;
-  double extent_x = 0, extent_y = 0;    // bounding box size of the base piece (mm)
+  double extent_x = 0, extent_y = 0;  // bounding box size of the base piece (mm)
 };
 
 struct BlockSet {

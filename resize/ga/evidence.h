@@ -32,8 +32,8 @@ struct FitEvidence {
   PatternDistance ga_to_draft;       // fitted vs drafted for the body
   PatternDistance grading_to_draft;  // proportional grading vs drafted for the body
   double grading_max_binding_error_mm = 0;
-  double time_s = 0;                 // GA + polish
-  std::string polish_start;          // "ga" or "seed" (ResizeResult::polish_start)
+  double time_s = 0;         // GA + polish
+  std::string polish_start;  // "ga" or "seed" (ResizeResult::polish_start)
 };
 
 // Resizes DraftDesign(design, base) to `body` and compares with

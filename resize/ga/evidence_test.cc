@@ -34,7 +34,8 @@ TEST(Evidence, ComparePatternsIsZeroForIdenticalAndRigidlyMovedPatterns) {
   Pattern q = p;
   const Eigen::Matrix2d r = Eigen::Rotation2Dd(0.3).toRotationMatrix();
   for (Piece& piece : q.pieces)
-    piece.outline = ((piece.outline * r.transpose()).rowwise() + Eigen::RowVector2d(50, -20)).eval();
+    piece.outline =
+        ((piece.outline * r.transpose()).rowwise() + Eigen::RowVector2d(50, -20)).eval();
   const PatternDistance d = ComparePatterns(p, q);
   EXPECT_LT(d.max_mm, 1e-9);
   MeasurementSet big = BaseMeasurements("shirt");

@@ -9,7 +9,6 @@ namespace {
 
 constexpr double kDeg = 180.0 / M_PI;
 
-
 double Turning(const Outline& o, const std::vector<int>& idx, size_t k) {
   const Eigen::Vector2d a = o.row(idx[k]) - o.row(idx[k - 1]);
   const Eigen::Vector2d b = o.row(idx[k + 1]) - o.row(idx[k]);
@@ -31,8 +30,7 @@ void SeamEdges(const Outline& o, const std::vector<int>& idx, std::vector<double
 
 }  // namespace
 
-FitnessModel::FitnessModel(const Pattern& base, const BlockSet& blocks,
-                           const MeasurementSet& body)
+FitnessModel::FitnessModel(const Pattern& base, const BlockSet& blocks, const MeasurementSet& body)
     : base_(base), blocks_(blocks) {
   for (const MeasurementBinding& b : base.bindings)
     targets_.push_back(body.at(b.measurement) + b.ease_mm);
@@ -141,7 +139,8 @@ Objectives FitnessModel::Evaluate(const Eigen::VectorXd& genes, bool check_simpl
     }
     double angle_error = 0;
     for (size_t k = 1; k + 1 < d.a.size(); ++k) {
-      const double diff = Turning(outlines[d.piece_a], d.a, k) - Turning(outlines[d.piece_b], d.b, k);
+      const double diff =
+          Turning(outlines[d.piece_a], d.a, k) - Turning(outlines[d.piece_b], d.b, k);
       angle_error += std::abs(WrapAngle(diff - d.angle_base[k - 1])) * kDeg;
     }
     o.seam += (angle_error + edge_error) / static_cast<double>(d.a.size());
@@ -181,7 +180,8 @@ void FitnessModel::Residuals(const Eigen::VectorXd& genes, double angle_scale_mm
     }
     c.push_back(total);
     for (size_t k = 1; k + 1 < d.a.size(); ++k) {
-      const double diff = Turning(outlines[d.piece_a], d.a, k) - Turning(outlines[d.piece_b], d.b, k);
+      const double diff =
+          Turning(outlines[d.piece_a], d.a, k) - Turning(outlines[d.piece_b], d.b, k);
       s.push_back(WrapAngle(diff - d.angle_base[k - 1]) * angle_scale_mm);
     }
   }

@@ -14,7 +14,8 @@ void UniformCrossover(const BlockSet& blocks, double min_gap_mm, Rng& rng, Eigen
                       Eigen::VectorXd* b) {
   for (const Block& block : blocks.blocks) {
     const int n = block.nu * block.nv;
-    const Eigen::VectorXd a0 = a->segment(block.offset, 2 * n), b0 = b->segment(block.offset, 2 * n);
+    const Eigen::VectorXd a0 = a->segment(block.offset, 2 * n),
+                          b0 = b->segment(block.offset, 2 * n);
     for (int k = 0; k < n; ++k) {
       if (Uniform(rng) < 0.5) continue;
       std::swap((*a)[block.offset + 2 * k], (*b)[block.offset + 2 * k]);
@@ -27,7 +28,8 @@ void UniformCrossover(const BlockSet& blocks, double min_gap_mm, Rng& rng, Eigen
 
 void NonUniformMutation(const BlockSet& blocks, const MutationParams& p, Rng& rng,
                         Eigen::VectorXd* genes) {
-  const double progress = std::clamp(static_cast<double>(p.generation) / p.max_generations, 0.0, 1.0);
+  const double progress =
+      std::clamp(static_cast<double>(p.generation) / p.max_generations, 0.0, 1.0);
   const double power = std::pow(1.0 - progress, p.exponent);
   for (const Block& block : blocks.blocks) {
     const bool along_u = Uniform(rng) < 0.5;
@@ -55,8 +57,8 @@ void NonUniformMutation(const BlockSet& blocks, const MutationParams& p, Rng& rn
   }
 }
 
-double LifeSpan(double cost, double cost_min, double cost_max, double cost_mean,
-                double life_min, double life_max) {
+double LifeSpan(double cost, double cost_min, double cost_max, double cost_mean, double life_min,
+                double life_max) {
   const double eta = 0.5 * (life_max - life_min);
   if (cost >= cost_mean) {
     const double span = cost_max - cost_mean;

@@ -27,11 +27,11 @@ namespace bespoke {
 using Rng = std::mt19937_64;
 
 struct MutationParams {
-  int generation = 0;          // gen
-  int max_generations = 1;     // Gen_max
-  double exponent = 2;         // r of Eq 4.4
+  int generation = 0;            // gen
+  int max_generations = 1;       // Gen_max
+  double exponent = 2;           // r of Eq 4.4
   double range_fraction = 0.05;  // t = fraction x block extent along the mutated axis
-  double min_gap_mm = 0.1;     // ordering gap kept between grid lines (mm)
+  double min_gap_mm = 0.1;       // ordering gap kept between grid lines (mm)
 };
 
 void UniformCrossover(const BlockSet& blocks, double min_gap_mm, Rng& rng, Eigen::VectorXd* a,
@@ -42,8 +42,8 @@ void NonUniformMutation(const BlockSet& blocks, const MutationParams& params, Rn
 
 // Eq 4.2: life span of an individual with scalar cost `cost` given the
 // population's min, max and expected (mean) cost; eta = (max - min) / 2.
-double LifeSpan(double cost, double cost_min, double cost_max, double cost_mean,
-                double life_min, double life_max);
+double LifeSpan(double cost, double cost_min, double cost_max, double cost_mean, double life_min,
+                double life_max);
 
 // Adds N(0, sigma) to every control point coordinate of every block; a block
 // whose ordering breaks is redrawn (up to 20 times, then left at its seed).

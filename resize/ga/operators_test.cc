@@ -86,8 +86,8 @@ TEST(Grading, Algorithm6TakesTheLargestRatioPerPiece) {
   MeasurementSet body = BaseMeasurements("shirt");
   body["chest_girth"] = 1100;  // chest target +100 mm on 1240 mm of pattern
   const std::vector<double> s = ProportionalScales(p, body);
-  EXPECT_NEAR(s[0], 1340.0 / 1240.0, 1e-9);  // back: chest is its largest ratio
-  EXPECT_NEAR(s[2], 1.0, 1e-9);              // sleeve: arm length unchanged
+  EXPECT_NEAR(s[0], 1340.0 / 1240.0, 1e-9);    // back: chest is its largest ratio
+  EXPECT_NEAR(s[2], 1.0, 1e-9);                // sleeve: arm length unchanged
   EXPECT_NEAR(s[4], (s[0] + s[1]) / 2, 1e-9);  // collar: mean of back and front (its seams)
 }
 

@@ -63,8 +63,8 @@ double Merit(const Eval& e, const Eigen::VectorXd& x, const Eigen::VectorXd& x0,
 }  // namespace
 
 void PolishOptions::Check() const {
-  if (max_iterations < 0 || !(tolerance_mm > 0) || !(angle_scale_mm > 0) ||
-      !(regularisation > 0) || !(min_gap_mm > 0))
+  if (max_iterations < 0 || !(tolerance_mm > 0) || !(angle_scale_mm > 0) || !(regularisation > 0) ||
+      !(min_gap_mm > 0))
     throw InputError("polish options: iterations >= 0, other values > 0");
 }
 
@@ -125,8 +125,7 @@ PolishReport Polish(const PolishOptions& o, const FitnessModel& model, Eigen::Ve
     }
     if (!accepted) break;
     report.max_constraint_after_mm = current.c.cwiseAbs().maxCoeff();
-    if (report.max_constraint_after_mm < o.tolerance_mm && last_step < 1e-3)
-      break;
+    if (report.max_constraint_after_mm < o.tolerance_mm && last_step < 1e-3) break;
   }
   report.max_constraint_after_mm = current.c.cwiseAbs().maxCoeff();
   *genes = x;

@@ -21,12 +21,12 @@
 namespace bespoke {
 
 struct PolishOptions {
-  int max_iterations = 60;        // default 60
-  double tolerance_mm = 0.01;     // constraint tolerance (mm). Default 0.01 mm.
-  double angle_scale_mm = 100;    // mm per radian of turning-angle change. Default 100.
-  double regularisation = 1e-4;   // mu, keeps unused control points put. Default 1e-4.
-  double min_gap_mm = 0.1;        // grid ordering gap. Default 0.1 mm.
-  void Check() const;             // InputError for non-positive values
+  int max_iterations = 60;       // default 60
+  double tolerance_mm = 0.01;    // constraint tolerance (mm). Default 0.01 mm.
+  double angle_scale_mm = 100;   // mm per radian of turning-angle change. Default 100.
+  double regularisation = 1e-4;  // mu, keeps unused control points put. Default 1e-4.
+  double min_gap_mm = 0.1;       // grid ordering gap. Default 0.1 mm.
+  void Check() const;            // InputError for non-positive values
 };
 
 struct PolishReport {

@@ -49,9 +49,12 @@ std::vector<PieceShapeChange> ShapeChanges(const Pattern& base, const Pattern& f
 }
 
 json ObjectivesJson(const Objectives& o) {
-  return {{"measurement_mm", o.measurement_mm},         {"seam", o.seam},
-          {"shape_deg", o.shape_deg},                   {"max_measurement_error_mm", o.max_measurement_mm},
-          {"critical_shape_deg", o.critical_shape_deg}, {"max_seam_mismatch_mm", o.max_seam_length_mm},
+  return {{"measurement_mm", o.measurement_mm},
+          {"seam", o.seam},
+          {"shape_deg", o.shape_deg},
+          {"max_measurement_error_mm", o.max_measurement_mm},
+          {"critical_shape_deg", o.critical_shape_deg},
+          {"max_seam_mismatch_mm", o.max_seam_length_mm},
           {"outlines_simple", o.simple}};
 }
 
@@ -93,8 +96,10 @@ json ResizeReportJson(const Pattern& base, const MeasurementSet& body, const Res
                       {"height_mm", c.height_mm}});
   json history = json::array();
   for (const GenerationStats& g : r.history)
-    history.push_back({{"generation", g.generation}, {"best_measurement_mm", g.best_measurement_mm},
-                       {"best_seam", g.best_seam}, {"best_shape_deg", g.best_shape_deg}});
+    history.push_back({{"generation", g.generation},
+                       {"best_measurement_mm", g.best_measurement_mm},
+                       {"best_seam", g.best_seam},
+                       {"best_shape_deg", g.best_shape_deg}});
   return {{"format", "bespoke-resize-report"},
           {"version", 1},
           {"pattern", base.name},
@@ -157,8 +162,8 @@ std::string ResizeReportText(const json& report) {
       << Fmt("%.3f", o["max_measurement_error_mm"].get<double>()) << " mm, worst seam "
       << Fmt("%.3f", o["max_seam_mismatch_mm"].get<double>()) << " mm)\n";
   }
-  s << "\nPolish started from the " << report["polish"]["start"].get<std::string>()
-    << "; time: GA " << Fmt("%.2f", report["time_s"]["ga"].get<double>()) << " s, polish "
+  s << "\nPolish started from the " << report["polish"]["start"].get<std::string>() << "; time: GA "
+    << Fmt("%.2f", report["time_s"]["ga"].get<double>()) << " s, polish "
     << Fmt("%.2f", report["time_s"]["polish"].get<double>()) << " s\n";
   return s.str();
 }

@@ -15,7 +15,7 @@ namespace bespoke {
 // Per-piece shape change of `fitted` against `base` (same vertex counts).
 struct PieceShapeChange {
   std::string piece;
-  double mean_angle_change_deg = 0;      // over all outline vertices
+  double mean_angle_change_deg = 0;  // over all outline vertices
   double max_angle_change_deg = 0;
   double critical_angle_change_deg = 0;  // mean over critical points
   double area_ratio = 1;                 // fitted area / base area

@@ -23,14 +23,11 @@ struct Individual {
 
 using Population = std::vector<Individual>;
 
-pagmo::vector_double Point(const Objectives& o) {
-  return {o.measurement_mm, o.seam, o.shape_deg};
-}
+pagmo::vector_double Point(const Objectives& o) { return {o.measurement_mm, o.seam, o.shape_deg}; }
 
 void EvaluateRange(const FitnessModel& model, Population* pop, size_t begin, size_t end) {
-  tbb::parallel_for(begin, end, [&](size_t i) {
-    (*pop)[i].objectives = model.Evaluate((*pop)[i].genes);
-  });
+  tbb::parallel_for(begin, end,
+                    [&](size_t i) { (*pop)[i].objectives = model.Evaluate((*pop)[i].genes); });
 }
 
 // Non-domination rank and crowding distance of every individual.
@@ -119,9 +116,10 @@ void Age(const ResizeOptions& options, const BlockSet& blocks, const FitnessMode
     const auto p = Point((*pop)[i].objectives);
     f.row(i) << p[0], p[1], p[2];
   }
-  const Eigen::RowVector3d lo = f.colwise().minCoeff(), span =
-      (f.colwise().maxCoeff() - lo).cwiseMax(1e-12);
-  const Eigen::VectorXd cost = ((f.rowwise() - lo).array().rowwise() / span.array()).rowwise().sum();
+  const Eigen::RowVector3d lo = f.colwise().minCoeff(),
+                           span = (f.colwise().maxCoeff() - lo).cwiseMax(1e-12);
+  const Eigen::VectorXd cost =
+      ((f.rowwise() - lo).array().rowwise() / span.array()).rowwise().sum();
   std::vector<size_t> first;
   for (size_t i = 0; i < pop->size(); ++i)
     if (r.rank[i] == 0) first.push_back(i);
@@ -148,8 +146,8 @@ void Age(const ResizeOptions& options, const BlockSet& blocks, const FitnessMode
 
 void ResizeOptions::Check() const {
   if (population < 8 || population % 2 != 0)
-    throw InputError("--population must be even and at least 8 (got " +
-                     std::to_string(population) + ")");
+    throw InputError("--population must be even and at least 8 (got " + std::to_string(population) +
+                     ")");
   if (generations < 0) throw InputError("--generations must be >= 0");
   if (crossover_rate < 0 || crossover_rate > 1 || mutation_rate < 0 || mutation_rate > 1)
     throw InputError("crossover and mutation rates must be in [0, 1]");
@@ -180,7 +178,8 @@ ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& base,
   Population pop(n);
   for (size_t i = 0; i < n; ++i) {
     pop[i].genes = seed;
-    if (i > 0) AddGaussianNoise(blocks, options.noise_sigma_mm, options.min_gap_mm, rng, &pop[i].genes);
+    if (i > 0)
+      AddGaussianNoise(blocks, options.noise_sigma_mm, options.min_gap_mm, rng, &pop[i].genes);
   }
   EvaluateRange(model, &pop, 0, n);
   ProgressBegin(progress, "evolving", options.generations);
@@ -222,7 +221,8 @@ ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& base,
     stats.best_measurement_mm = stats.best_seam = stats.best_shape_deg =
         std::numeric_limits<double>::infinity();
     for (const Individual& ind : pop) {
-      stats.best_measurement_mm = std::min(stats.best_measurement_mm, ind.objectives.measurement_mm);
+      stats.best_measurement_mm =
+          std::min(stats.best_measurement_mm, ind.objectives.measurement_mm);
       stats.best_seam = std::min(stats.best_seam, ind.objectives.seam);
       stats.best_shape_deg = std::min(stats.best_shape_deg, ind.objectives.shape_deg);
     }
@@ -233,7 +233,8 @@ ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& base,
   const Ranking ranking = Rank(pop);
   for (size_t i = 0; i < n; ++i)
     if (ranking.rank[i] == 0) result.front.push_back(pop[i].objectives);
-  if (!result.history.empty()) result.history.back().front_size = static_cast<int>(result.front.size());
+  if (!result.history.empty())
+    result.history.back().front_size = static_cast<int>(result.front.size());
   Eigen::VectorXd genes = pop[Pick(model, pop, ranking, options.tolerance_mm)].genes;
   result.ga_objectives = model.Evaluate(genes, true);
   const auto ga_end = std::chrono::steady_clock::now();

@@ -28,20 +28,20 @@
 namespace bespoke {
 
 struct ResizeOptions {
-  int population = 400;            // individuals (thesis: 400). Even, >= 8.
-  int generations = 200;           // generations (thesis: 200)
-  std::uint64_t seed = 1;          // random seed; same seed, same result
-  double crossover_rate = 0.9;     // probability a mating pair is recombined. Default 0.9.
-  double mutation_rate = 0.6;      // at generation 0 (thesis: 0.6)
-  double mutation_rate_step = 0.002;  // subtracted per generation (thesis: 0.002)
-  double mutation_rate_min = 0.05;    // floor. Default 0.05.
-  double mutation_exponent = 2;       // r of Eq 4.4. Default 2.
-  double mutation_range = 0.05;       // t of Eq 4.4 as a fraction of the block size. Default 0.05.
-  double noise_sigma_mm = 1;          // Gaussian noise of the initial population (thesis: unit)
+  int population = 400;                // individuals (thesis: 400). Even, >= 8.
+  int generations = 200;               // generations (thesis: 200)
+  std::uint64_t seed = 1;              // random seed; same seed, same result
+  double crossover_rate = 0.9;         // probability a mating pair is recombined. Default 0.9.
+  double mutation_rate = 0.6;          // at generation 0 (thesis: 0.6)
+  double mutation_rate_step = 0.002;   // subtracted per generation (thesis: 0.002)
+  double mutation_rate_min = 0.05;     // floor. Default 0.05.
+  double mutation_exponent = 2;        // r of Eq 4.4. Default 2.
+  double mutation_range = 0.05;        // t of Eq 4.4 as a fraction of the block size. Default 0.05.
+  double noise_sigma_mm = 1;           // Gaussian noise of the initial population (thesis: unit)
   double life_min = 3, life_max = 12;  // generations, Eq 4.2. Defaults 3 and 12.
-  double tolerance_mm = 1;         // measurement tolerance of the final pick. Default 1 mm.
-  double min_gap_mm = 0.1;         // grid ordering gap. Default 0.1 mm.
-  bool polish = true;              // run the constrained polish. Default on.
+  double tolerance_mm = 1;             // measurement tolerance of the final pick. Default 1 mm.
+  double min_gap_mm = 0.1;             // grid ordering gap. Default 0.1 mm.
+  bool polish = true;                  // run the constrained polish. Default on.
   PolishOptions polish_options;
   BlockOptions block_options;
   void Check() const;  // InputError naming the bad option
@@ -56,14 +56,14 @@ struct GenerationStats {
 };
 
 struct ResizeResult {
-  Pattern fitted;                 // the final answer
-  Objectives ga_objectives;       // the GA's pick, before the polish
-  Objectives objectives;          // the final answer
+  Pattern fitted;            // the final answer
+  Objectives ga_objectives;  // the GA's pick, before the polish
+  Objectives objectives;     // the final answer
   PolishReport polish;
   std::string polish_start = "none";  // which start the kept polish came from: "ga" or "seed"
-  std::vector<Objectives> front;  // final first front
+  std::vector<Objectives> front;      // final first front
   std::vector<GenerationStats> history;
-  Pattern seed;                   // proportional scaling (Algorithm 6)
+  Pattern seed;  // proportional scaling (Algorithm 6)
   Objectives seed_objectives;
   std::vector<double> targets_mm, achieved_mm;  // per binding
   std::vector<double> seam_mismatch_mm;         // per seam: length(a) - length(b) - ease

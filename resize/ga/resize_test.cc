@@ -14,7 +14,8 @@ namespace {
 double MaxVertexMove(const Pattern& a, const Pattern& b) {
   double worst = 0;
   for (size_t p = 0; p < a.pieces.size(); ++p)
-    worst = std::max(worst, (a.pieces[p].outline - b.pieces[p].outline).rowwise().norm().maxCoeff());
+    worst =
+        std::max(worst, (a.pieces[p].outline - b.pieces[p].outline).rowwise().norm().maxCoeff());
   return worst;
 }
 

@@ -56,8 +56,8 @@ std::vector<V> EdgePoints(const json& edge, const V& a, const V& b, bool relativ
                           int n, const std::string& where) {
   std::vector<V> points;
   auto control = [&](const json& c) {
-    const V p = relative ? V(c.at(0).get<double>(), c.at(1).get<double>())
-                         : ReadVertex(c, scale, where);
+    const V p =
+        relative ? V(c.at(0).get<double>(), c.at(1).get<double>()) : ReadVertex(c, scale, where);
     return relative ? RelativeToAbsolute(a, b, p) : p;
   };
   try {
@@ -69,12 +69,15 @@ std::vector<V> EdgePoints(const json& edge, const V& a, const V& b, bool relativ
       const json& c = edge["curvature"];
       const std::string type = c.at("type").get<std::string>();
       const json& p = c.at("params");
-      if (type == "quadratic") points = SampleQuadratic(a, control(p.at(0)), b, n + 1);
-      else if (type == "cubic") points = SampleCubic(a, control(p.at(0)), control(p.at(1)), b, n + 1);
+      if (type == "quadratic")
+        points = SampleQuadratic(a, control(p.at(0)), b, n + 1);
+      else if (type == "cubic")
+        points = SampleCubic(a, control(p.at(0)), control(p.at(1)), b, n + 1);
       else if (type == "circle")
         points = ArcPoints(a, b, scale * p.at(0).get<double>(), p.at(1).get<double>() != 0,
                            p.at(2).get<double>() != 0, n, where);
-      else throw InputError(where + ": unknown curvature type '" + type + "'");
+      else
+        throw InputError(where + ": unknown curvature type '" + type + "'");
     }
   } catch (const json::exception& e) {
     throw InputError(where + ": malformed curvature (" + std::string(e.what()) + ")");
@@ -90,8 +93,8 @@ void GarmentCodeOptions::Check() const {
 }
 
 bool IsGarmentCode(const json& document) {
-  return document.is_object() && document.contains("pattern") &&
-         document["pattern"].is_object() && document["pattern"].contains("panels");
+  return document.is_object() && document.contains("pattern") && document["pattern"].is_object() &&
+         document["pattern"].contains("panels");
 }
 
 json ParseJsonWithComments(const std::string& text, const std::string& what) {
@@ -137,7 +140,8 @@ Pattern PatternFromGarmentCode(const GarmentCodeOptions& options, const json& do
           b >= static_cast<int>(vertices.size()))
         throw InputError(ew + ": vertex id out of range");
       if (next[0] != ends[1]) throw InputError(ew + ": edges do not form a loop");
-      const std::vector<V> pts = EdgePoints(edges[e], vertices[a], vertices[b], relative, scale, n, ew);
+      const std::vector<V> pts =
+          EdgePoints(edges[e], vertices[a], vertices[b], relative, scale, n, ew);
       outline.insert(outline.end(), pts.begin(), pts.end());
     }
     Piece piece;

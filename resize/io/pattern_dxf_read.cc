@@ -137,7 +137,8 @@ Outline Clean(std::vector<Eigen::Vector2d> points) {
 
 Piece BuildPiece(const RawBlock& block, const Insert& insert, double unit,
                  const std::string& what) {
-  const double c = std::cos(insert.angle_deg * M_PI / 180), s = std::sin(insert.angle_deg * M_PI / 180);
+  const double c = std::cos(insert.angle_deg * M_PI / 180),
+               s = std::sin(insert.angle_deg * M_PI / 180);
   auto place = [&](const Eigen::Vector2d& p) -> Eigen::Vector2d {
     const Eigen::Vector2d q = p.cwiseProduct(insert.scale);
     return unit * (Eigen::Vector2d(c * q.x() - s * q.y(), s * q.x() + c * q.y()) + insert.at);
@@ -221,8 +222,10 @@ Pattern PatternFromDxf(const std::string& text, const std::string& what) {
     const std::vector<Entity> entities = Entities(pairs, i + 2, end, what);
     if (section == "BLOCKS") {
       for (const Entity& e : entities) {
-        if (e.type == "BLOCK") blocks.push_back({GetText(e, 2), {}});
-        else if (e.type != "ENDBLK" && !blocks.empty()) blocks.back().entities.push_back(e);
+        if (e.type == "BLOCK")
+          blocks.push_back({GetText(e, 2), {}});
+        else if (e.type != "ENDBLK" && !blocks.empty())
+          blocks.back().entities.push_back(e);
       }
     } else if (section == "ENTITIES") {
       for (const Entity& e : entities)

@@ -155,8 +155,9 @@ void PieceBlock(const DxfWriteOptions& o, Writer& w, const Piece& piece, const s
   const int n = piece.num_vertices();
   const double sign = SignedArea(piece.outline) >= 0 ? 1 : -1;
   for (int i : piece.notches) {
-    const Eigen::Vector2d d = (Eigen::Vector2d(sew.row((i + 1) % n)) -
-                               Eigen::Vector2d(sew.row((i - 1 + n) % n))).normalized();
+    const Eigen::Vector2d d =
+        (Eigen::Vector2d(sew.row((i + 1) % n)) - Eigen::Vector2d(sew.row((i - 1 + n) % n)))
+            .normalized();
     const Eigen::Vector2d inward(-d.y() * sign, d.x() * sign);
     const Eigen::Vector2d at = sew.row(i).transpose();
     if (o.flavor == DxfFlavor::kAstm) {

@@ -74,8 +74,10 @@ void ParsePieceExtras(const json& j, const std::string& where, Piece* piece) {
       throw InputError(lw + ": needs \"vertex\", \"near\" or \"position\"");
     }
     const int existing = piece->FindLandmark(landmark.name);
-    if (existing >= 0) piece->landmarks[existing] = landmark;
-    else piece->landmarks.push_back(landmark);
+    if (existing >= 0)
+      piece->landmarks[existing] = landmark;
+    else
+      piece->landmarks.push_back(landmark);
   }
   if (j.contains("grain")) {
     piece->has_grain = true;
@@ -150,7 +152,9 @@ void ParseSeamsAndBindings(const json& j, const std::string& what, Pattern* patt
 }
 
 json SideJson(const SeamSide& s) {
-  return {{"piece", s.piece}, {"from", s.from}, {"to", s.to},
+  return {{"piece", s.piece},
+          {"from", s.from},
+          {"to", s.to},
           {"direction", s.forward ? "forward" : "backward"}};
 }
 
@@ -163,14 +167,16 @@ json PatternToJson(const Pattern& pattern) {
     for (const Landmark& l : p.landmarks) {
       json lj = {{"name", l.name}};
       if (!l.datum.empty()) lj["datum"] = l.datum;
-      if (l.vertex >= 0) lj["vertex"] = l.vertex;
-      else lj["position"] = Point(l.position);
+      if (l.vertex >= 0)
+        lj["vertex"] = l.vertex;
+      else
+        lj["position"] = Point(l.position);
       landmarks.push_back(lj);
     }
-    json pj = {{"name", p.name},           {"outline", PolylineJson(p.outline)},
-               {"critical", p.critical},   {"landmarks", landmarks},
-               {"notches", p.notches},     {"cut_count", p.cut_count},
-               {"mirrored", p.mirrored},   {"on_fold", p.on_fold}};
+    json pj = {{"name", p.name},         {"outline", PolylineJson(p.outline)},
+               {"critical", p.critical}, {"landmarks", landmarks},
+               {"notches", p.notches},   {"cut_count", p.cut_count},
+               {"mirrored", p.mirrored}, {"on_fold", p.on_fold}};
     if (p.has_grain) pj["grain"] = {{"start", Point(p.grain_start)}, {"end", Point(p.grain_end)}};
     json lines = json::array();
     for (const Outline& line : p.internal_lines) lines.push_back(PolylineJson(line));
@@ -179,29 +185,30 @@ json PatternToJson(const Pattern& pattern) {
   }
   json seams = json::array();
   for (const Seam& s : pattern.seams)
-    seams.push_back({{"name", s.name}, {"a", SideJson(s.a)}, {"b", SideJson(s.b)},
-                     {"ease_mm", s.ease_mm}});
+    seams.push_back(
+        {{"name", s.name}, {"a", SideJson(s.a)}, {"b", SideJson(s.b)}, {"ease_mm", s.ease_mm}});
   json bindings = json::array();
   for (const MeasurementBinding& b : pattern.bindings) {
     json terms = json::array();
     for (const BindingTerm& t : b.terms)
-      terms.push_back({{"piece", t.piece}, {"from", t.from}, {"to", t.to},
+      terms.push_back({{"piece", t.piece},
+                       {"from", t.from},
+                       {"to", t.to},
                        {"path", t.path == BindingTerm::Path::kOutline ? "outline" : "straight"},
                        {"multiplicity", t.multiplicity}});
-    bindings.push_back({{"id", b.id}, {"measurement", b.measurement}, {"ease_mm", b.ease_mm},
-                        {"terms", terms}});
+    bindings.push_back(
+        {{"id", b.id}, {"measurement", b.measurement}, {"ease_mm", b.ease_mm}, {"terms", terms}});
   }
-  return {{"format", "bespoke-pattern"}, {"version", 1},        {"units", "mm"},
-          {"name", pattern.name},        {"source", pattern.source}, {"pieces", pieces},
-          {"seams", seams},              {"bindings", bindings}};
+  return {
+      {"format", "bespoke-pattern"}, {"version", 1},     {"units", "mm"},  {"name", pattern.name},
+      {"source", pattern.source},    {"pieces", pieces}, {"seams", seams}, {"bindings", bindings}};
 }
 
 Pattern PatternFromJson(const json& document, const std::string& what) {
   if (!document.is_object()) throw InputError(what + ": a pattern is a JSON object");
   if (document.value("format", "") != "bespoke-pattern")
     throw InputError(what + ": not a Bespoke pattern (\"format\" must be \"bespoke-pattern\")");
-  if (document.value("units", "mm") != "mm")
-    throw InputError(what + ": \"units\" must be \"mm\"");
+  if (document.value("units", "mm") != "mm") throw InputError(what + ": \"units\" must be \"mm\"");
   Pattern pattern;
   pattern.name = Get<std::string>(document, "name", "", what);
   pattern.source = Get<std::string>(document, "source", what, what);

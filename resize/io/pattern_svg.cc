@@ -20,11 +20,16 @@ std::string Num(double v) {
 std::string Escape(const std::string& text) {
   std::string out;
   for (char c : text) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
+    if (c == '&')
+      out += "&amp;";
+    else if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '"')
+      out += "&quot;";
+    else
+      out += c;
   }
   return out;
 }
@@ -36,8 +41,8 @@ struct Placement {
 std::string Path(const Outline& o, const Placement& at, bool closed) {
   std::ostringstream s;
   for (Eigen::Index i = 0; i < o.rows(); ++i)
-    s << (i == 0 ? "M" : "L") << Num(o(i, 0) + at.offset.x()) << ","
-      << Num(at.offset.y() - o(i, 1)) << " ";
+    s << (i == 0 ? "M" : "L") << Num(o(i, 0) + at.offset.x()) << "," << Num(at.offset.y() - o(i, 1))
+      << " ";
   if (closed) s << "Z";
   return s.str();
 }
@@ -50,7 +55,8 @@ void DrawPiece(const SvgOptions& options, const Piece& piece, const Placement& a
                std::ostream& out) {
   out << "  <g id=\"" << Escape(piece.name) << "\">\n";
   if (options.seam_allowance_mm > 0)
-    out << "    <path d=\"" << Path(OffsetOutline(piece.outline, options.seam_allowance_mm), at, true)
+    out << "    <path d=\""
+        << Path(OffsetOutline(piece.outline, options.seam_allowance_mm), at, true)
         << "\" fill=\"none\" stroke=\"black\" stroke-width=\"0.4\" stroke-dasharray=\"4 2\"/>\n";
   out << "    <path d=\"" << Path(piece.outline, at, true)
       << "\" fill=\"#f4f4f4\" stroke=\"black\" stroke-width=\"0.6\"/>\n";
@@ -60,8 +66,8 @@ void DrawPiece(const SvgOptions& options, const Piece& piece, const Placement& a
   const double sign = SignedArea(piece.outline) >= 0 ? 1 : -1;
   const int n = piece.num_vertices();
   for (int i : piece.notches) {
-    const Eigen::Vector2d prev = piece.outline.row((i - 1 + n) % n), next =
-                                                                    piece.outline.row((i + 1) % n);
+    const Eigen::Vector2d prev = piece.outline.row((i - 1 + n) % n),
+                          next = piece.outline.row((i + 1) % n);
     const Eigen::Vector2d d = (next - prev).normalized();
     const Eigen::Vector2d outward(d.y() * sign, -d.x() * sign);
     const Eigen::Vector2d a = ToSvg(piece.outline.row(i), at),

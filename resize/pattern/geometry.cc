@@ -164,8 +164,7 @@ std::vector<Eigen::Vector2d> ResamplePolyline(const std::vector<Eigen::Vector2d>
   return points;
 }
 
-std::vector<Eigen::Vector2d> SmoothCurve(const std::vector<Eigen::Vector2d>& through,
-                                         int samples) {
+std::vector<Eigen::Vector2d> SmoothCurve(const std::vector<Eigen::Vector2d>& through, int samples) {
   BESPOKE_CHECK(through.size() >= 2, "SmoothCurve needs 2+ points");
   if (through.size() == 2) return ResamplePolyline(through, samples);
   // Centripetal Catmull-Rom with reflected end tangents, densely sampled.

@@ -10,12 +10,14 @@ namespace bespoke {
 
 const std::vector<std::string>& CoreMeasurementNames() {
   static const std::vector<std::string> names = {
-      "stature",        "neck_girth",      "bust_girth",     "chest_girth",   "under_bust_girth",
-      "waist_girth",    "middle_hip_girth", "hip_girth",     "upper_arm_girth", "wrist_girth",
-      "thigh_girth",    "knee_girth",      "calf_girth",     "ankle_girth",   "back_length",
-      "front_length",   "shoulder_length", "across_shoulder", "back_width",   "front_width",
-      "armhole_length", "arm_length",      "sleeve_length",  "waist_to_hip",  "crotch_length",
-      "inside_leg",     "outseam",         "waist_to_knee",  "waist_height"};
+      "stature",          "neck_girth",      "bust_girth",       "chest_girth",
+      "under_bust_girth", "waist_girth",     "middle_hip_girth", "hip_girth",
+      "upper_arm_girth",  "wrist_girth",     "thigh_girth",      "knee_girth",
+      "calf_girth",       "ankle_girth",     "back_length",      "front_length",
+      "shoulder_length",  "across_shoulder", "back_width",       "front_width",
+      "armhole_length",   "arm_length",      "sleeve_length",    "waist_to_hip",
+      "crotch_length",    "inside_leg",      "outseam",          "waist_to_knee",
+      "waist_height"};
   return names;
 }
 
@@ -32,8 +34,9 @@ MeasurementSet MeasurementsFromJson(const nlohmann::json& document, const std::s
   for (const auto& entry : document["measurements"]) {
     if (!entry.is_object() || !entry.contains("name") || !entry["name"].is_string() ||
         !entry.contains("value_mm") || !entry["value_mm"].is_number())
-      throw InputError(what + ": every measurement needs a string \"name\" and a number "
-                              "\"value_mm\"");
+      throw InputError(what +
+                       ": every measurement needs a string \"name\" and a number "
+                       "\"value_mm\"");
     const std::string name = entry["name"].get<std::string>();
     const double value = entry["value_mm"].get<double>();
     if (!std::isfinite(value) || value <= 0)
@@ -57,8 +60,11 @@ nlohmann::json MeasurementsToJson(const MeasurementSet& values) {
     if (name == "stature" || name.find("_height") != std::string::npos) kind = "height";
     list.push_back({{"name", name}, {"kind", kind}, {"value_mm", value}, {"flags", {}}});
   }
-  return {{"format", "bespoke-measurements"}, {"version", 1}, {"units", "mm"},
-          {"frame", "body"}, {"measurements", list}};
+  return {{"format", "bespoke-measurements"},
+          {"version", 1},
+          {"units", "mm"},
+          {"frame", "body"},
+          {"measurements", list}};
 }
 
 void CheckBindingsAgainst(const Pattern& pattern, const MeasurementSet& values,

@@ -36,18 +36,18 @@ struct Landmark {
 };
 
 struct Piece {
-  std::string name;                      // unique in the pattern, e.g. "front"
-  Outline outline;                       // #V x 2 sew line, mm, counter-clockwise
-  std::vector<int> critical;             // outline indices of critical points
+  std::string name;           // unique in the pattern, e.g. "front"
+  Outline outline;            // #V x 2 sew line, mm, counter-clockwise
+  std::vector<int> critical;  // outline indices of critical points
   std::vector<Landmark> landmarks;
-  std::vector<int> notches;              // outline indices
+  std::vector<int> notches;  // outline indices
   bool has_grain = false;
   Eigen::Vector2d grain_start = Eigen::Vector2d::Zero();  // mm
   Eigen::Vector2d grain_end = Eigen::Vector2d::Zero();    // mm, arrow end
-  std::vector<Outline> internal_lines;   // open polylines, mm
-  int cut_count = 1;                     // pieces to cut
-  bool mirrored = false;                 // cut as mirrored pairs (left/right)
-  bool on_fold = false;                  // cut on the fold (a half piece)
+  std::vector<Outline> internal_lines;                    // open polylines, mm
+  int cut_count = 1;                                      // pieces to cut
+  bool mirrored = false;                                  // cut as mirrored pairs (left/right)
+  bool on_fold = false;                                   // cut on the fold (a half piece)
 
   int num_vertices() const { return static_cast<int>(outline.rows()); }
   // Index of the landmark called `name`, or -1.
@@ -67,28 +67,28 @@ struct SeamSide {
 
 struct Seam {
   std::string name;
-  SeamSide a, b;         // stitched point i of a to point i of b
-  double ease_mm = 0;    // designed length(a) - length(b), e.g. sleeve-head ease
+  SeamSide a, b;       // stitched point i of a to point i of b
+  double ease_mm = 0;  // designed length(a) - length(b), e.g. sleeve-head ease
 };
 
 struct BindingTerm {
   enum class Path { kStraight, kOutline };
   std::string piece;
-  std::string from, to;     // landmark names on `piece`
+  std::string from, to;         // landmark names on `piece`
   Path path = Path::kStraight;  // kOutline walks forward from `from` to `to`
-  double multiplicity = 1;  // e.g. 2 for a half piece cut twice
+  double multiplicity = 1;      // e.g. 2 for a half piece cut twice
 };
 
 struct MeasurementBinding {
   std::string id;           // unique, e.g. "chest"
   std::string measurement;  // core measurement name, e.g. "chest_girth"
   std::vector<BindingTerm> terms;
-  double ease_mm = 0;       // target = body measurement + ease
+  double ease_mm = 0;  // target = body measurement + ease
 };
 
 struct Pattern {
   std::string name;
-  std::string source;       // where it came from ("design shirt (Aldrich)", a file)
+  std::string source;  // where it came from ("design shirt (Aldrich)", a file)
   std::vector<Piece> pieces;
   std::vector<Seam> seams;
   std::vector<MeasurementBinding> bindings;

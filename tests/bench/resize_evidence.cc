@@ -28,24 +28,32 @@ int main(int argc, char** argv) {
   std::string which = "both";
   std::filesystem::path truth_dir;
   for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--population")) options.population = std::stoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--generations")) options.generations = std::stoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--bodies")) count = std::stoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--design")) which = argv[i + 1];
-    else if (!std::strcmp(argv[i], "--truth-dir")) truth_dir = argv[i + 1];
+    if (!std::strcmp(argv[i], "--population"))
+      options.population = std::stoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--generations"))
+      options.generations = std::stoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--bodies"))
+      count = std::stoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--design"))
+      which = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--truth-dir"))
+      truth_dir = argv[i + 1];
   }
   std::vector<std::filesystem::path> truths;
   if (!truth_dir.empty()) {
     for (const auto& entry : std::filesystem::directory_iterator(truth_dir))
-      if (std::filesystem::exists(entry.path() / "truth.json")) truths.push_back(entry.path() / "truth.json");
+      if (std::filesystem::exists(entry.path() / "truth.json"))
+        truths.push_back(entry.path() / "truth.json");
     std::sort(truths.begin(), truths.end());
     if (static_cast<int>(truths.size()) > count) truths.resize(count);
     count = static_cast<int>(truths.size());
   }
   int failures = 0, rows = 0;
-  std::printf("| design | body | worst binding mm | worst seam mm | simple | shape deg | "
-              "GA-draft mean/max mm | grading-draft mean/max mm | grading worst binding mm | polish from | s |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| design | body | worst binding mm | worst seam mm | simple | shape deg | "
+      "GA-draft mean/max mm | grading-draft mean/max mm | grading worst binding mm | polish from | "
+      "s |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const std::string& design : DesignNames()) {
     if (which != "both" && which != design) continue;
     for (int b = 0; b < count; ++b) {
@@ -67,12 +75,13 @@ int main(int argc, char** argv) {
                       e.outlines_simple && e.ga_to_draft.mean_mm < e.grading_to_draft.mean_mm;
       failures += ok ? 0 : 1;
       ++rows;
-      std::printf("| %s | %s | %.3f | %.3f | %s | %.3f | %.1f / %.1f | %.1f / %.1f | %.1f | %s | %.2f |%s\n",
-                  design.c_str(), name.c_str(), e.max_binding_error_mm, e.max_seam_mismatch_mm,
-                  e.outlines_simple ? "yes" : "NO", e.shape_deg, e.ga_to_draft.mean_mm,
-                  e.ga_to_draft.max_mm, e.grading_to_draft.mean_mm, e.grading_to_draft.max_mm,
-                  e.grading_max_binding_error_mm, e.polish_start.c_str(), e.time_s,
-                  ok ? "" : " **miss**");
+      std::printf(
+          "| %s | %s | %.3f | %.3f | %s | %.3f | %.1f / %.1f | %.1f / %.1f | %.1f | %s | %.2f "
+          "|%s\n",
+          design.c_str(), name.c_str(), e.max_binding_error_mm, e.max_seam_mismatch_mm,
+          e.outlines_simple ? "yes" : "NO", e.shape_deg, e.ga_to_draft.mean_mm,
+          e.ga_to_draft.max_mm, e.grading_to_draft.mean_mm, e.grading_to_draft.max_mm,
+          e.grading_max_binding_error_mm, e.polish_start.c_str(), e.time_s, ok ? "" : " **miss**");
       std::fflush(stdout);
     }
   }
