@@ -7,6 +7,7 @@ namespace bespoke {
 // One declaration and one table row per subcommand (pipeline/cmd_<name>.cc).
 CommandRunner SetupVersionCommand(CLI::App& app);
 CommandRunner SetupInfoCommand(CLI::App& app);
+CommandRunner SetupCleanCommand(CLI::App& app);
 CommandRunner SetupRunCommand(CLI::App& app);
 CommandRunner SetupBatchCommand(CLI::App& app);
 CommandRunner SetupBatchMergeCommand(CLI::App& app);
@@ -20,6 +21,8 @@ const std::vector<Command>& AllCommands() {
        &SetupVersionCommand},
       {"info", "Format, points, fields, bounds and length unit of a scan or mesh file",
        &SetupInfoCommand},
+      {"clean", "Clean a scan and put it in the body frame (outliers, floor, clusters, normals)",
+       &SetupCleanCommand},
       {"run", "The whole job for one scan (clean, measure, fit a pattern) into one folder",
        &SetupRunCommand},
       {"batch", "Run every scan of a folder or manifest, each in its own worker process",

@@ -105,29 +105,31 @@ void PrincipalUp(const BodyFrameOptions& options, const Eigen::MatrixX3d& points
 }
 
 // Per side of the body (lateral coordinate below / above `split`): footprint
-// centre minus shin centre along `forward`, and the footprint centres.
+// centre minus ankle centre along `forward`.
 struct FeetCue {
   int sides = 0;
   double offset[2] = {0, 0};
   bool found[2] = {false, false};
 };
 
+bool InAnkleBand(const BodyFrameOptions& options, double z, double height) {
+  return z >= options.ankle_low_fraction * height && z <= options.ankle_high_fraction * height;
+}
+
 FeetCue MeasureFeet(const BodyFrameOptions& options, const Projected& p, double height,
                     const std::vector<double>& lateral, const std::vector<double>& forward,
                     double split) {
   FeetCue cue;
   for (int side = 0; side < 2; ++side) {
-    std::vector<double> foot, shin;
+    std::vector<double> foot, ankle;
     for (size_t i = 0; i < p.z.size(); ++i) {
       if ((lateral[i] > split) != (side == 1)) continue;
       if (p.z[i] <= options.foot_fraction * height) foot.push_back(forward[i]);
-      if (p.z[i] >= options.shin_low_fraction * height && p.z[i] <= options.shin_high_fraction * height) {
-        shin.push_back(forward[i]);
-      }
+      if (InAnkleBand(options, p.z[i], height)) ankle.push_back(forward[i]);
     }
-    if (foot.size() < 20 || shin.size() < 20) continue;
+    if (foot.size() < 20 || ankle.size() < 20) continue;
     cue.found[side] = true;
-    cue.offset[side] = ExtentCentre(foot) - ExtentCentre(shin);
+    cue.offset[side] = ExtentCentre(foot) - ExtentCentre(ankle);
     ++cue.sides;
   }
   return cue;
@@ -175,10 +177,10 @@ void BodyFrameOptions::Check() const {
   };
   require(end_fraction > 0 && end_fraction < 0.5, "end_fraction must be in (0, 0.5)");
   require(min_end_area_ratio >= 1, "min_end_area_ratio must be >= 1");
-  require(foot_fraction > 0 && foot_fraction < shin_low_fraction,
-          "foot_fraction must be in (0, shin_low_fraction)");
-  require(shin_low_fraction < shin_high_fraction && shin_high_fraction < 0.5,
-          "need shin_low_fraction < shin_high_fraction < 0.5");
+  require(foot_fraction > 0 && foot_fraction <= ankle_low_fraction,
+          "foot_fraction must be in (0, ankle_low_fraction]");
+  require(ankle_low_fraction < ankle_high_fraction && ankle_high_fraction < 0.5,
+          "need ankle_low_fraction < ankle_high_fraction < 0.5");
   require(min_foot_offset_mm >= 0 && min_head_offset_mm >= 0, "minimum offsets must be >= 0");
 }
 
@@ -243,7 +245,7 @@ BodyFrame EstimateBodyFrame(const BodyFrameOptions& options, const Eigen::Matrix
     const Eigen::Vector3d x = points.row(static_cast<Eigen::Index>(i)).transpose();
     lat[i] = lateral.dot(x);
     fwd[i] = forward0.dot(x);
-    if (p.z[i] <= options.shin_high_fraction * height) low_lateral.push_back(lat[i]);
+    if (p.z[i] <= options.ankle_high_fraction * height) low_lateral.push_back(lat[i]);
   }
   // Not the median: with two legs the median falls at the inner edge of
   // whichever leg has a few more points.
@@ -278,13 +280,13 @@ BodyFrame EstimateBodyFrame(const BodyFrameOptions& options, const Eigen::Matrix
   const Eigen::Vector3d forward = sign * forward0;
   const Eigen::Vector3d right = forward.cross(up).normalized();
 
-  // Origin: between the footprint centres.
+  // Origin: between the ankle centres.
   Eigen::Vector2d origin = Eigen::Vector2d::Zero();
   int sides = 0;
   for (int side = 0; side < 2; ++side) {
     std::vector<double> fx, fy;
     for (size_t i = 0; i < p.z.size(); ++i) {
-      if ((lat[i] > split) != (side == 1) || p.z[i] > options.foot_fraction * height) continue;
+      if ((lat[i] > split) != (side == 1) || !InAnkleBand(options, p.z[i], height)) continue;
       const Eigen::Vector3d x = points.row(static_cast<Eigen::Index>(i)).transpose();
       fx.push_back(right.dot(x));
       fy.push_back(forward.dot(x));
@@ -293,7 +295,8 @@ BodyFrame EstimateBodyFrame(const BodyFrameOptions& options, const Eigen::Matrix
     origin += Eigen::Vector2d(ExtentCentre(fx), ExtentCentre(fy));
     ++sides;
   }
-  if (sides == 0) throw InputError("no points near the floor: cannot find the feet");
+  if (sides == 0) throw InputError("no points at ankle height: cannot find the feet");
+  if (sides == 1) frame.flags.push_back("one_ankle_found");
   origin /= sides;
 
   Eigen::Matrix3d rotation;

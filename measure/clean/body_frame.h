@@ -20,9 +20,10 @@
 //        `lateral_axis_uncertain`.
 //  +y    Which way the person faces, from the feet: each foot's footprint
 //        (points below `foot_fraction` of the height) reaches far ahead of
-//        the shin above it (toes) and little behind (heel), so the centre of
-//        the footprint lies 50-90 mm in front of the centre of the shin's
-//        section. Trusted when both feet agree and the mean offset is at
+//        the ankle above it (toes) and little behind (heel), so the centre of
+//        the footprint lies 50-90 mm in front of the centre of the ankle's
+//        section (the band `ankle_low_fraction`..`ankle_high_fraction` of
+//        the height, above the foot). Trusted when both feet agree and the mean offset is at
 //        least `min_foot_offset_mm`. Otherwise the head decides: the face
 //        lies ahead of the neck, so the head's section between the mouth and
 //        the eyes is centred ahead of the narrowest section of the neck;
@@ -32,8 +33,11 @@
 //        Fails for feet hidden by long garments or cut off by the floor band,
 //        feet turned out by 90 degrees, or a scan of the upper body only.
 //  +x    = +y x +z: the person's right.
-//  origin The midpoint between the centres of the two footprints (the
-//        centre of the single footprint when the feet touch), on z = 0.
+//  origin The midpoint between the two ankle centres (centres of the robust
+//        extents of the legs' sections in the ankle band), on z = 0: the
+//        convention of the generated bodies (scanners/body, stance measured
+//        between the ankle centres). The footprint centres would lie ~65 mm
+//        further forward. One leg only: flag `one_ankle_found`.
 #ifndef BESPOKE_MEASURE_CLEAN_BODY_FRAME_H_
 #define BESPOKE_MEASURE_CLEAN_BODY_FRAME_H_
 
@@ -51,9 +55,9 @@ struct BodyFrameOptions {
   double end_fraction = 0.04;        // of the length, per end, for the up sign. Default 0.04.
   double min_end_area_ratio = 1.5;   // feet/head hull areas for a sure up sign. Default 1.5.
   double foot_fraction = 0.035;      // of the height: the footprint band. Default 0.035 (~60 mm).
-  double shin_low_fraction = 0.07;   // shin band, from. Default 0.07 (~120 mm).
-  double shin_high_fraction = 0.13;  // shin band, to. Default 0.13 (~230 mm).
-  double min_foot_offset_mm = 20.0;  // footprint ahead of the shins. Default 20 mm.
+  double ankle_low_fraction = 0.05;   // ankle band, from. Default 0.05 (~90 mm).
+  double ankle_high_fraction = 0.09;  // ankle band, to. Default 0.09 (~160 mm).
+  double min_foot_offset_mm = 20.0;  // footprint ahead of the ankles. Default 20 mm.
   double min_head_offset_mm = 10.0;  // face ahead of the neck. Default 10 mm.
   // Throws InputError when a value is out of range.
   void Check() const;
@@ -65,8 +69,8 @@ struct BodyFrame {
   double end_area_ratio = 0.0;      // feet/head hull area (principal-axis up; also with a floor)
   double lateral_ratio = 0.0;       // major/minor horizontal variance
   std::string front_source;         // "feet", "head" or "none"
-  double foot_offset_mm = 0.0;      // footprint centre ahead of the shin (mean of both feet), +y
-  int feet_found = 0;               // 0, 1 or 2 sides with footprint and shin points
+  double foot_offset_mm = 0.0;      // footprint centre ahead of the ankle (mean of both feet), +y
+  int feet_found = 0;               // 0, 1 or 2 sides with footprint and ankle points
   double head_offset_mm = 0.0;      // head section centre ahead of the neck, +y
   double height_mm = 0.0;           // top of the body above z = 0
   std::vector<std::string> flags;   // see above; empty when every cue was clear

@@ -1,5 +1,5 @@
 // The whole chain on synthetic scenes: a person on a floor with noise, stray
-// points and a chair, in metres, seen from random scanner poses.
+// points and a pole, in metres, seen from random scanner poses.
 #include "measure/clean/clean.h"
 
 #include <gtest/gtest.h>
@@ -115,9 +115,9 @@ TEST_P(CleanChainTest, RecoversTheBodyFromAScanInMetres) {
   ExpectBodyRecovered(scene, result);
 }
 
-// The full scene: a large floor, a chair 150 mm from the right hand, stray
+// The full scene: a large floor, a pole 150 mm from the right hand, stray
 // points and clumps, in millimetres.
-TEST_P(CleanChainTest, DropsFloorChairAndStrayPoints) {
+TEST_P(CleanChainTest, DropsFloorPoleAndStrayPoints) {
   SyntheticSceneOptions options;
   options.seed = GetParam() + 10;
   options.spacing_mm = 5.0;
@@ -125,8 +125,8 @@ TEST_P(CleanChainTest, DropsFloorChairAndStrayPoints) {
   const SyntheticScene scene = MakeSyntheticScene(options);
   const CleanResult result = CleanScan(CleanOptions{}, scene.cloud);
   EXPECT_TRUE(result.floor.has_value());
-  ASSERT_GE(result.cluster_sizes.size(), 2u);  // the chair was a cluster of its own
-  // The chair holds more than 2 % of the points: its removal is flagged.
+  ASSERT_GE(result.cluster_sizes.size(), 2u);  // the pole was a cluster of its own
+  // The pole holds more than 2 % of the points: its removal is flagged.
   ExpectBodyRecovered(scene, result, {"large_cluster_dropped"});
 
   // Stage bookkeeping: counts chain up, times are recorded.

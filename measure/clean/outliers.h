@@ -24,7 +24,11 @@ namespace bespoke {
 
 struct StatisticalOutlierOptions {
   int mean_k = 16;          // neighbours averaged per point. Default 16.
-  double stddev_mul = 3.0;  // reject score > median + stddev_mul * 1.4826 * MAD. Default 3.
+  // Reject score > median + stddev_mul * 1.4826 * MAD. Default 5: on a 4 mm
+  // voxel grid that rejects scores above ~11.6 mm (median ~7.6 mm), keeping
+  // open scan borders (e.g. the soles' rim, score ~1.4x the median) while a
+  // point 40 mm from any surface scores > 30 mm (docs/cleaning.md).
+  double stddev_mul = 5.0;
   // Throws InputError unless 1 <= mean_k <= 100 and stddev_mul > 0.
   void Check() const;
 };

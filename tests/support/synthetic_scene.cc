@@ -127,12 +127,15 @@ struct Sample {
   ScenePart part;
 };
 
+// Feet pointing forward: toes 190 mm ahead of the ankle axis, heel 60 behind.
+double FootCentreY(const SyntheticSceneOptions& o) { return o.feet_forward ? 65.0 : 0.0; }
+
 std::vector<std::unique_ptr<Shape>> MakePerson(const SyntheticSceneOptions& o, double* hand_max_x) {
   std::vector<std::unique_ptr<Shape>> s;
-  const double shin_y = o.feet_forward ? -65.0 : 0.0;
+  const double shin_y = 0.0, foot_y = FootCentreY(o);
   for (double side : {-1.0, 1.0}) {
-    s.push_back(std::make_unique<Box>(Eigen::Vector3d(side * 100 - 50, -125, 0),
-                                      Eigen::Vector3d(side * 100 + 50, 125, 70), true));
+    s.push_back(std::make_unique<Box>(Eigen::Vector3d(side * 100 - 50, foot_y - 125, 0),
+                                      Eigen::Vector3d(side * 100 + 50, foot_y + 125, 70), true));
     s.push_back(std::make_unique<Capsule>(Eigen::Vector3d(side * 100, shin_y, 60),
                                           Eigen::Vector3d(side * 95, shin_y, 480), 48));
     s.push_back(std::make_unique<Capsule>(Eigen::Vector3d(side * 95, shin_y, 480),
@@ -200,7 +203,7 @@ SyntheticScene MakeSyntheticScene(const SyntheticSceneOptions& o) {
   SampleUnion(person, o.spacing_mm, rng, &samples);
 
   const double object_x = scene.right_hand_max_x_mm + o.object_gap_mm;
-  const Box object(Eigen::Vector3d(object_x, -200, 0), Eigen::Vector3d(object_x + 400, 200, 1000), true);
+  const Box object(Eigen::Vector3d(object_x, -100, 0), Eigen::Vector3d(object_x + 200, 100, 1100), true);
   if (o.second_object) {
     const auto count = static_cast<std::int64_t>(object.Area() / (o.spacing_mm * o.spacing_mm));
     for (std::int64_t k = 0; k < count; ++k) {
@@ -211,7 +214,7 @@ SyntheticScene MakeSyntheticScene(const SyntheticSceneOptions& o) {
   }
   const double f = o.floor_half_size_mm;
   auto under_something = [&](const Eigen::Vector3d& p) {
-    const bool under_foot = std::abs(std::abs(p.x()) - 100) <= 50 && std::abs(p.y()) <= 125;
+    const bool under_foot = std::abs(std::abs(p.x()) - 100) <= 50 && std::abs(p.y() - FootCentreY(o)) <= 125;
     return under_foot || (o.second_object && object.Inside(p + Eigen::Vector3d(0, 0, 1), 0.0));
   };
   if (o.floor) {

@@ -3,13 +3,13 @@
 // scanner pose in a known unit.
 //
 // The person (body frame, docs/contracts.md: mm, +z up, soles on z = 0,
-// facing +y, right at +x, origin between the feet), 1750 mm tall, A-pose:
-//   feet    boxes 100 x 250 x 70 mm centred at x = +-100, y = 0 (so the
-//           origin is the midpoint of the footprint centres); no sole faces
-//   legs    capsules (shin r 48, thigh r 72) rising from y = shin_y, where
-//           shin_y = -65 with `feet_forward` (toes 190 mm ahead of the shin
-//           axis, heel 60 behind) and 0 without (feet centred under the
-//           shins: no front cue from the feet)
+// facing +y, right at +x, origin between the ankles as in scanners/body),
+// 1750 mm tall, A-pose:
+//   legs    capsules (shin r 48, thigh r 72) on axes at x = +-100, y = 0
+//   feet    boxes 100 x 250 x 70 mm centred at x = +-100 under the legs,
+//           with `feet_forward` at y = 65 (toes 190 mm ahead of the ankle
+//           axis, heel 60 behind), else at y = 0 (no front cue from the
+//           feet); no sole faces
 //   torso   ellipsoid 350 x 230 x 780 mm; neck capsule r 55
 //   head    ellipsoid 156 x 196 x 200 mm, top at z = 1750; with
 //           `head_forward` its centre is 25 mm ahead of the neck and a nose
@@ -21,8 +21,8 @@
 // dropped), uniformly by area, each with its true outward normal, and moved
 // along it by Gaussian noise.
 // The rest: a square floor patch at z = 0 (not under the feet or the
-// object), a box ("chair") whose nearest face is `object_gap_mm` to the
-// right of the right hand, isolated stray points and clumps of 3 stray points
+// object), a box 200 x 200 x 1100 mm (a pole, a coat stand) whose nearest
+// face is `object_gap_mm` to the right of the right hand, isolated stray points and clumps of 3 stray points
 // at least 40 mm from every surface, within the surfaces' bounding box grown
 // by 50 mm (some below the floor). Note the whole scene's extent decides
 // whether a reader can guess the unit (GuessLengthUnit accepts 0.5-2.6 m):
