@@ -164,10 +164,15 @@ Objectives FitnessModel::Evaluate(const Eigen::VectorXd& genes, bool check_simpl
 }
 
 void FitnessModel::Residuals(const Eigen::VectorXd& genes, double angle_scale_mm,
-                             Eigen::VectorXd* constraints, Eigen::VectorXd* soft) const {
-  std::vector<Outline> outlines;
+                             Eigen::VectorXd* constraints, Eigen::VectorXd* soft, int only_piece,
+                             const Eigen::VectorXd* reuse_soft) const {
+  thread_local std::vector<Outline> outlines;
   Outlines(genes, &outlines);
-  std::vector<double> c, s, la, lb;
+  const bool reuse = only_piece >= 0 && reuse_soft != nullptr;
+  auto stale = [&](int p) { return reuse && p != only_piece; };
+  thread_local std::vector<double> c, s, la, lb;
+  c.clear();
+  s.clear();
   for (size_t b = 0; b < targets_.size(); ++b)
     c.push_back(BindingAchieved(b, genes, outlines) - targets_[b]);
   for (const SeamData& d : seams_) {
@@ -179,13 +184,23 @@ void FitnessModel::Residuals(const Eigen::VectorXd& genes, double angle_scale_mm
       s.push_back(la[k] - lb[k] - d.edge_target[k]);
     }
     c.push_back(total);
+    const bool copy = stale(d.piece_a) && stale(d.piece_b);
     for (size_t k = 1; k + 1 < d.a.size(); ++k) {
+      if (copy) {
+        s.push_back((*reuse_soft)[static_cast<Eigen::Index>(s.size())]);
+        continue;
+      }
       const double diff =
           Turning(outlines[d.piece_a], d.a, k) - Turning(outlines[d.piece_b], d.b, k);
       s.push_back(WrapAngle(diff - d.angle_base[k - 1]) * angle_scale_mm);
     }
   }
   for (size_t p = 0; p < outlines.size(); ++p) {
+    if (stale(static_cast<int>(p))) {  // unchanged piece: copy its block
+      const Eigen::Index n = outlines[p].rows(), at = static_cast<Eigen::Index>(s.size());
+      for (Eigen::Index v = 0; v < n; ++v) s.push_back((*reuse_soft)[at + v]);
+      continue;
+    }
     // Edge directions, not just turning angles: a straight fold or hem line
     // must not tilt as a whole either (a pure turning-angle penalty lets a
     // CB fold line rotate, which no cutter would accept).

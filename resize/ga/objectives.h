@@ -55,8 +55,13 @@ class FitnessModel {
   // edge's direction change scaled by `angle_scale_mm` per radian (keeps
   // inner angles and the piece's orientation to the grain), paired-edge
   // differences in mm, paired seam-angle differences scaled likewise).
+  // With `only_piece` >= 0 and `reuse_soft` (the soft residuals of genes that
+  // differ from these only in that piece's control points), soft entries that
+  // do not depend on that piece are copied instead of recomputed (for the
+  // polish's finite differences).
   void Residuals(const Eigen::VectorXd& genes, double angle_scale_mm, Eigen::VectorXd* constraints,
-                 Eigen::VectorXd* soft) const;
+                 Eigen::VectorXd* soft, int only_piece = -1,
+                 const Eigen::VectorXd* reuse_soft = nullptr) const;
 
   const Pattern& base() const { return base_; }
   const BlockSet& blocks() const { return blocks_; }

@@ -33,9 +33,10 @@ std::vector<double> Gaps(const BlockSet& blocks, const Eigen::VectorXd& x) {
 }
 
 Eval Residuals(const FitnessModel& model, const PolishOptions& o, const Eigen::VectorXd& x,
-               const std::vector<double>& gaps0) {
+               const std::vector<double>& gaps0, int only_piece = -1,
+               const Eigen::VectorXd* reuse_soft = nullptr) {
   Eval e;
-  model.Residuals(x, o.angle_scale_mm, &e.c, &e.s);
+  model.Residuals(x, o.angle_scale_mm, &e.c, &e.s, only_piece, reuse_soft);
   const std::vector<double> gaps = Gaps(model.blocks(), x);
   const Eigen::Index k = e.s.size();
   e.s.conservativeResize(k + static_cast<Eigen::Index>(gaps.size()));
@@ -79,6 +80,11 @@ PolishReport Polish(const PolishOptions& o, const FitnessModel& model, Eigen::Ve
   report.max_constraint_after_mm = report.max_constraint_before_mm;
   if (current.c.size() == 0) return report;
   const Eigen::Index n = x.size(), m = current.c.size(), k = current.s.size();
+  std::vector<int> piece_of(n);  // which piece's block each control coordinate belongs to
+  for (size_t b = 0; b < model.blocks().blocks.size(); ++b) {
+    const Block& block = model.blocks().blocks[b];
+    for (int g = 0; g < 2 * block.nu * block.nv; ++g) piece_of[block.offset + g] = static_cast<int>(b);
+  }
   double last_step = 0;
   for (int it = 0; it < o.max_iterations; ++it) {
     report.iterations = it + 1;
@@ -88,7 +94,7 @@ PolishReport Polish(const PolishOptions& o, const FitnessModel& model, Eigen::Ve
     tbb::parallel_for(Eigen::Index(0), n, [&](Eigen::Index j) {
       Eigen::VectorXd xp = x;
       xp[j] += h;
-      const Eval ep = Residuals(model, o, xp, gaps0);
+      const Eval ep = Residuals(model, o, xp, gaps0, piece_of[j], &current.s);
       jc.col(j) = (ep.c - current.c) / h;
       js.col(j) = (ep.s - current.s) / h;
     });
