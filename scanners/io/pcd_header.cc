@@ -1,6 +1,7 @@
 #include "scanners/io/pcd_header.h"
 
 #include <set>
+#include <unordered_set>
 
 #include "scanners/io/formats.h"
 
@@ -115,7 +116,7 @@ class PcdHeaderParser {
         Fail(file_, "PCD header: a point of more than " + std::to_string(kMaxPointBytes) +
                         " bytes (corrupt SIZE/COUNT)");
       }
-      if (f.name != "_" && header_.FindField(f.name) >= 0) {
+      if (f.name != "_" && !names_.insert(f.name).second) {
         Fail(file_, "PCD header: field '" + f.name + "' appears twice");
       }
       header_.fields.push_back(std::move(f));
@@ -164,6 +165,7 @@ class PcdHeaderParser {
   LineCursor lines_;
   std::vector<std::string_view> tokens_;
   std::set<std::string> seen_;
+  std::unordered_set<std::string> names_;  // a set: FIELDS may list 100,000s of names
   PcdHeader header_;
 };
 

@@ -270,6 +270,19 @@ TEST(PcdMalformed, HeaderAndDataCorpus) {
                      "unpacks to 0 bytes", options);
 }
 
+// 200,000 fields: the duplicate-name check is linear, not quadratic.
+TEST(PcdMalformed, HugeHeadersParseInLinearTime) {
+  std::string fields = "FIELDS x y z", sizes = "SIZE 4 4 4", types = "TYPE F F F";
+  for (int i = 0; i < 200000; ++i) {
+    fields += " f" + std::to_string(i);
+    sizes += " 1";
+    types += " U";
+  }
+  const std::string pcd = "VERSION 0.7\n" + fields + "\n" + sizes + "\n" + types +
+                          "\nWIDTH 0\nDATA binary\n";
+  EXPECT_EQ(ReadScanFromBytes(FixtureOptions(), "h.pcd", pcd).report.fields.size(), 200003u);
+}
+
 TEST(PcdMalformed, NaNOnlyOrganisedCloud) {
   TempDir dir;
   std::string s = Pcd(kXyzFields, "WIDTH 2\nHEIGHT 2\nPOINTS 4\nDATA binary\n");

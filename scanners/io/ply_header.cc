@@ -1,6 +1,7 @@
 #include "scanners/io/ply_header.h"
 
 #include <optional>
+#include <unordered_set>
 
 #include "scanners/io/formats.h"
 
@@ -87,11 +88,11 @@ class HeaderParser {
       Fail(file_, where + ": element count " + Quote(tokens_[2]) + " is not an integer");
     }
     CheckCount(options_, file_, element.count, "element '" + element.name + "' count", where);
-    for (const PlyElement& other : header_.elements) {
-      if (other.name == element.name) {
-        Fail(file_, where + ": element '" + element.name + "' declared twice");
-      }
+    // Sets, not scans: a hostile header may declare 100,000s of names.
+    if (!element_names_.insert(element.name).second) {
+      Fail(file_, where + ": element '" + element.name + "' declared twice");
     }
+    property_names_.clear();
     header_.elements.push_back(std::move(element));
   }
 
@@ -122,7 +123,7 @@ class HeaderParser {
       property.type = Type(tokens_[1], where);
       property.name = std::string(tokens_[2]);
     }
-    if (element.FindProperty(property.name) >= 0) {
+    if (!property_names_.insert(property.name).second) {
       Fail(file_, where + ": property '" + property.name + "' declared twice in element '" +
                       element.name + "'");
     }
@@ -160,6 +161,8 @@ class HeaderParser {
   std::vector<std::string_view> tokens_;
   PlyHeader header_;
   bool have_format_ = false;
+  std::unordered_set<std::string> element_names_;
+  std::unordered_set<std::string> property_names_;  // of the current element
 };
 
 }  // namespace

@@ -322,6 +322,22 @@ TEST(PlyMalformed, TooFewFinitePointsAndNoPoints) {
                      "at least 1000", defaults);
 }
 
+// 200,000 declared elements and properties: the header checks are linear
+// (a quadratic duplicate check would take minutes and hit the test timeout).
+TEST(PlyMalformed, HugeHeadersParseInLinearTime) {
+  std::string many_elements = "ply\nformat ascii 1.0\nelement vertex 1\n" + std::string(kXyz);
+  std::string many_properties = "ply\nformat ascii 1.0\nelement vertex 0\n" + std::string(kXyz);
+  for (int i = 0; i < 200000; ++i) {
+    many_elements += "element e" + std::to_string(i) + " 0\n";
+    many_properties += "property uchar p" + std::to_string(i) + "\n";
+  }
+  many_elements += "end_header\n1 2 3\n";
+  many_properties += "end_header\n";
+  EXPECT_EQ(ReadScanFromBytes(FixtureOptions(), "e.ply", many_elements).cloud.size(), 1);
+  EXPECT_EQ(ReadScanFromBytes(FixtureOptions(), "p.ply", many_properties).report.fields.size(),
+            200003u);
+}
+
 TEST(ScanIo, FileSystemProblemsAreInputErrors) {
   TempDir dir;
   ExpectScanRejected(dir / "empty.ply", "", "file is empty");
