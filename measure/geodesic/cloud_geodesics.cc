@@ -1,5 +1,6 @@
 #include "measure/geodesic/cloud_geodesics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -44,7 +45,7 @@ std::pair<Eigen::Vector3d, int> CloudGeodesics::Snap(const Eigen::Vector3d& x,
   double distance = 0;
   const int node = grid_.LocateNode(x, &distance);
   const double limit = options_.max_snap_distance_mm > 0 ? options_.max_snap_distance_mm
-                                                         : 2 * grid_.cell_size_mm();
+                                                         : std::max(10.0, 3 * grid_.cell_size_mm());
   if (distance > limit) {
     char text[160];
     std::snprintf(text, sizeof text,

@@ -33,7 +33,7 @@ struct CloudGeodesicsOptions {
   CloudGridOptions grid;
   PropagationOptions propagation;
   // Query points farther than this from the nearest scan point are rejected;
-  // 0 (default) = 2 cell sizes.
+  // 0 (default) = the larger of 3 cell sizes and 10 mm.
   double max_snap_distance_mm = 0;
   // Point to point: flow the whole path at the end (default true).
   bool polish = true;

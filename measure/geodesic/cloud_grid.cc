@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <string>
 
@@ -15,6 +16,8 @@ void CloudGridOptions::Check() const {
   if (!(auto_cell_spacings > 0) || !std::isfinite(auto_cell_spacings))
     bad("auto_cell_spacings must be > 0");
   if (neighbours < 6 || neighbours > 1000) bad("neighbours must be in [6, 1000]");
+  if (!(auto_cells_per_diagonal > 0) || !std::isfinite(auto_cells_per_diagonal))
+    bad("auto_cells_per_diagonal must be > 0");
   if (!(sheet_gap_mm >= 0) || !std::isfinite(sheet_gap_mm)) bad("sheet_gap_mm must be >= 0");
   if (!(blend_cells >= 0 && blend_cells <= 3)) bad("blend_cells must be in [0, 3]");
   if (!(max_link_angle_deg > 0 && max_link_angle_deg <= 90))
@@ -68,6 +71,56 @@ std::vector<std::vector<int>> SplitSheets(const Eigen::MatrixX3d& points, const 
   return groups;
 }
 
+// Pieces of one cell that lie in one plane are one sheet with a sampling gap
+// between them (scan lines, grazing angles); pieces apart ALONG the normal are
+// different sheets. Merges the former, largest pieces first.
+std::vector<std::vector<int>> MergeCoplanar(const Eigen::MatrixX3d& points,
+                                            std::vector<std::vector<int>> groups, double gap) {
+  if (groups.size() <= 1) return groups;
+  std::stable_sort(groups.begin(), groups.end(),
+                   [](const auto& a, const auto& b) { return a.size() > b.size(); });
+  auto rows = [&](const std::vector<int>& g) {
+    Eigen::MatrixX3d m(static_cast<Eigen::Index>(g.size()), 3);
+    for (size_t i = 0; i < g.size(); ++i) m.row(static_cast<Eigen::Index>(i)) = points.row(g[i]);
+    return m;
+  };
+  std::vector<std::vector<int>> merged;
+  std::vector<LocalSurface> planes;
+  std::vector<bool> planar;
+  for (auto& g : groups) {
+    const Eigen::MatrixX3d pts = rows(g);
+    const Eigen::Vector3d centre = pts.colwise().mean().transpose();
+    double flatness = 1;
+    if (g.size() >= 3) PcaPlane(pts, &flatness);
+    size_t target = merged.size();
+    for (size_t m = 0; m < merged.size() && target == merged.size(); ++m)
+      if (planar[m] && std::abs(planes[m].Offset(centre)) < 0.5 * gap) target = m;
+    // A piece too small or too crooked for a plane of its own, in a cell where
+    // no piece has a plane either, shows no sign of being another sheet: it
+    // joins the nearest piece. (Off a planar piece's plane it stays apart.)
+    const bool any_planar = std::find(planar.begin(), planar.end(), true) != planar.end();
+    if (target == merged.size() && !merged.empty() && !(flatness < 0.3) && !any_planar) {
+      double best = std::numeric_limits<double>::infinity();
+      for (size_t m = 0; m < merged.size(); ++m) {
+        const double d = (rows(merged[m]).colwise().mean().transpose() - centre).squaredNorm();
+        if (d < best) best = d, target = m;
+      }
+    }
+    if (target == merged.size()) {
+      merged.emplace_back();
+      planes.emplace_back();
+      planar.push_back(false);
+    }
+    merged[target].insert(merged[target].end(), g.begin(), g.end());
+    if (merged[target].size() >= 3) {
+      double flatness = 1;
+      planes[target] = PcaPlane(rows(merged[target]), &flatness);
+      planar[target] = flatness < 0.3;
+    }
+  }
+  return merged;
+}
+
 }  // namespace
 
 CloudGrid::CloudGrid(const CloudGridOptions& options, const Eigen::MatrixX3d& points,
@@ -78,8 +131,15 @@ CloudGrid::CloudGrid(const CloudGridOptions& options, const Eigen::MatrixX3d& po
   index_ = std::make_unique<PointIndex>(points);  // checks finiteness
   spacing_ = index_->MedianSpacing();
   if (!(spacing_ > 0)) throw InputError("cloud grid: all points coincide");
-  cell_ = options.cell_size_mm > 0 ? options.cell_size_mm : options.auto_cell_spacings * spacing_;
-  gap_ = options.sheet_gap_mm > 0 ? options.sheet_gap_mm : 2.5 * spacing_;
+  const double diagonal =
+      (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm();
+  cell_ = options.cell_size_mm > 0
+              ? options.cell_size_mm
+              : std::max(options.auto_cell_spacings * spacing_,
+                         diagonal / options.auto_cells_per_diagonal);
+  const double ratio = cell_ / spacing_;
+  neighbours_ = static_cast<int>(std::clamp(ratio * ratio, double(options.neighbours), 1000.0));
+  gap_ = options.sheet_gap_mm > 0 ? options.sheet_gap_mm : 2 * index_->SpacingQuantile(0.9);
   blend_ = options.blend_cells * cell_;
   ProgressBegin(progress, "building the geodesic grid", 3);
   BuildCells(points);
@@ -127,8 +187,11 @@ void CloudGrid::BuildCells(const Eigen::MatrixX3d& points) {
     size_t end = begin;
     while (end < order.size() && keys[order[end]] == keys[order[begin]]) ++end;
     const std::int64_t key = keys[order[begin]];
-    const auto groups = SplitSheets(points, order.data() + begin, static_cast<int>(end - begin),
-                                    gap_, *index_, keys);
+    const auto groups = MergeCoplanar(
+        points,
+        SplitSheets(points, order.data() + begin, static_cast<int>(end - begin), gap_, *index_,
+                    keys),
+        gap_);
     cells_[key] = {static_cast<int>(node_cell_.size()), static_cast<int>(groups.size())};
     for (const auto& group : groups) {
       const int node = static_cast<int>(node_cell_.size());
@@ -147,6 +210,7 @@ void CloudGrid::FitNodes(const CloudGridOptions& options, const Eigen::MatrixX3d
   const int nodes = static_cast<int>(node_cell_.size());
   sites_.resize(static_cast<size_t>(nodes));
   surfaces_.resize(static_cast<size_t>(nodes));
+  local_spacing_.resize(static_cast<size_t>(nodes));
   std::vector<int> near;
   std::vector<double> d2;
   for (int node = 0; node < nodes; ++node) {
@@ -154,7 +218,7 @@ void CloudGrid::FitNodes(const CloudGridOptions& options, const Eigen::MatrixX3d
     Eigen::MatrixX3d own(end - begin, 3);
     for (int i = begin; i < end; ++i) own.row(i - begin) = points.row(node_points_[i]);
     const Eigen::Vector3d mean = own.colwise().mean().transpose();
-    index_->Knn(mean, options.neighbours, &near, &d2);
+    index_->Knn(mean, neighbours_, &near, &d2);
     Eigen::MatrixX3d around(static_cast<Eigen::Index>(near.size()), 3);
     for (size_t i = 0; i < near.size(); ++i) around.row(i) = points.row(near[i]);
     // Seed plane from the node's own points (one sheet by construction), or
@@ -169,6 +233,9 @@ void CloudGrid::FitNodes(const CloudGridOptions& options, const Eigen::MatrixX3d
       seed = close.size() >= 3 ? PcaPlane(around(close, Eigen::all)) : PcaPlane(around);
     }
     surfaces_[node] = FitLocalSurface(options.fit, around, seed, 0.5 * gap_);
+    // Local sample spacing: d points cover about pi r^2 around the node.
+    local_spacing_[node] =
+        d2.empty() ? spacing_ : std::sqrt(d2.back() * kPi / static_cast<double>(d2.size()));
     sites_[node] = surfaces_[node].PlaneAt(mean).point;
   }
 }
@@ -190,9 +257,13 @@ bool CloudGrid::Connected(int a, int b, double cos_max) {
     ++link_stats_.offset;
     return false;
   }
+  // A scan point near the chord's middle; "near" allows for the local
+  // sampling, which is much sparser than the median in places.
   double d2 = 0;
   index_->Nearest(0.5 * (pa + pb), &d2);
-  if (d2 > 0.36 * gap_ * gap_) {
+  const double reach =
+      std::max(0.6 * gap_, 1.5 * std::max(local_spacing_[a], local_spacing_[b]));
+  if (d2 > reach * reach) {
     ++link_stats_.continuity;
     return false;
   }

@@ -6,16 +6,17 @@
 // (key = ix + nx * (iy + ny * iz)); only non-empty cells are stored (a hash map
 // from key to nodes, O(#cells) memory - never the dense nx*ny*nz array).
 // A cell's points are split into NODES, one per sheet of surface in the cell:
-// points closer than sheet_gap_mm are the same sheet, so an arm 15 mm from the
-// torso gives two nodes where a cell holds both. Each node has
+// points closer than sheet_gap_mm are the same sheet, and so are pieces that
+// lie in one plane (a sampling gap); pieces apart along the normal are not. So
+// an arm 15 mm from the torso gives two nodes where a cell holds both. Each node has
 //   - a local surface fitted to the d = `neighbours` scan points nearest it
 //     (FLANN k-d tree), ignoring points off its own sheet;
 //   - a site: the mean of its points (the thesis's "destination") moved onto
 //     that surface.
 // Two nodes in neighbouring cells (26-neighbourhood) are LINKED only where the
 // surface connects them: normals within max_link_angle_deg, each site within
-// sheet_gap_mm / 2 of the other's surface, and the chord between the sites
-// within 0.6 * sheet_gap_mm of a scan point at its midpoint. Sheets separated
+// sheet_gap_mm / 2 of the other's surface, and a scan point near the chord's
+// midpoint (within 0.6 sheet_gap_mm or 1.5 local point spacings). Sheets separated
 // by an air gap wider than sheet_gap_mm are never linked, so geodesics go
 // around, never through the air. Holes smaller than about a cell are bridged.
 //
@@ -40,10 +41,16 @@
 namespace bespoke {
 
 struct CloudGridOptions {
-  double cell_size_mm = 0;         // grid interval; 0 (default) = auto_cell_spacings x spacing
-  double auto_cell_spacings = 3;   // default 3 median point spacings per cell side
-  int neighbours = 32;             // d, scan points per local fit; default 32
-  double sheet_gap_mm = 0;         // 0 (default) = 2.5 x median point spacing
+  // Grid interval; 0 (default) = the larger of auto_cell_spacings x the median
+  // point spacing and the bounding-box diagonal / auto_cells_per_diagonal (so
+  // very dense scans do not make needlessly many cells).
+  double cell_size_mm = 0;
+  double auto_cell_spacings = 3;         // default 3 point spacings
+  double auto_cells_per_diagonal = 400;  // default 400 (about 5 mm on an adult)
+  // d, scan points per local fit; default 32, raised to (cell / spacing)^2
+  // when cells are large compared with the spacing so a fit spans its cell.
+  int neighbours = 32;
+  double sheet_gap_mm = 0;         // 0 (default) = 2 x the 90th-percentile point spacing
   double max_link_angle_deg = 60;  // default 60 degrees between linked normals
   SurfaceFit fit = SurfaceFit::kQuadric;  // default quadric (kPlane: the thesis)
   // Tangent planes blend the surfaces of the linked nodes whose sites lie
@@ -72,6 +79,7 @@ class CloudGrid : public TangentPlaneSource {
   double spacing_mm() const { return spacing_; }      // median point spacing
   double cell_size_mm() const { return cell_; }
   double blend_radius_mm() const { return blend_; }
+  int neighbours() const { return neighbours_; }      // d actually used
   double sheet_gap_mm() const { return gap_; }
   int num_cells() const { return static_cast<int>(cells_.size()); }
   int num_nodes() const { return static_cast<int>(sites_.size()); }
@@ -107,6 +115,7 @@ class CloudGrid : public TangentPlaneSource {
 
   std::unique_ptr<PointIndex> index_;
   double spacing_ = 0, cell_ = 0, gap_ = 0, blend_ = 0;
+  int neighbours_ = 0;
   Eigen::Vector3d min_ = Eigen::Vector3d::Zero();
   std::int64_t dims_[3] = {0, 0, 0};
   // cell key -> (first node, node count); nodes of a cell are contiguous.
@@ -117,6 +126,7 @@ class CloudGrid : public TangentPlaneSource {
   std::vector<int> point_node_;               // #P
   std::vector<Eigen::Vector3d> sites_;
   std::vector<LocalSurface> surfaces_;
+  std::vector<double> local_spacing_;         // per node, mm
   std::vector<int> link_offsets_, link_targets_;  // CSR adjacency
   LinkStats link_stats_;
 };

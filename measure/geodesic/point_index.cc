@@ -57,7 +57,7 @@ int PointIndex::Knn(const Eigen::Vector3d& query, int k, std::vector<int>* indic
   return static_cast<int>(count);
 }
 
-double PointIndex::MedianSpacing(int max_samples) const {
+double PointIndex::SpacingQuantile(double quantile, int max_samples) const {
   const Eigen::Index n = points_.rows();
   if (n < 2) return 0;
   const Eigen::Index samples = std::min<Eigen::Index>(n, std::max(1, max_samples));
@@ -76,8 +76,10 @@ double PointIndex::MedianSpacing(int max_samples) const {
     if (d > 0) spacing.push_back(d);
   }
   if (spacing.empty()) return 0;
-  std::nth_element(spacing.begin(), spacing.begin() + spacing.size() / 2, spacing.end());
-  return spacing[spacing.size() / 2];
+  const size_t at = std::min(spacing.size() - 1, static_cast<size_t>(std::clamp(quantile, 0.0, 1.0) *
+                                                                      static_cast<double>(spacing.size())));
+  std::nth_element(spacing.begin(), spacing.begin() + static_cast<std::ptrdiff_t>(at), spacing.end());
+  return spacing[at];
 }
 
 }  // namespace bespoke

@@ -41,7 +41,10 @@ class PointIndex {
 
   // The median distance from a point to its nearest other point, estimated on
   // up to `max_samples` evenly spread points (mm): the scan's sample spacing.
-  double MedianSpacing(int max_samples = 4000) const;
+  double MedianSpacing(int max_samples = 4000) const { return SpacingQuantile(0.5, max_samples); }
+  // The same distance's `quantile` (0..1): 0.9 describes the sparse parts of
+  // an unevenly sampled scan (grazing angles, single-sensor areas).
+  double SpacingQuantile(double quantile, int max_samples = 4000) const;
 
  private:
   struct Impl;
