@@ -36,6 +36,17 @@ Eigen::MatrixX3i TrianglesToMatrix(const std::filesystem::path& file,
   return faces;
 }
 
+std::string NameSet::Unique(const std::string& name) {
+  if (used_.insert(name).second) return name;
+  int& k = next_suffix_[name];
+  if (k < 2) k = 2;
+  std::string candidate;
+  do {
+    candidate = name + "_" + std::to_string(k++);
+  } while (!used_.insert(candidate).second);
+  return candidate;
+}
+
 std::uint8_t ColorByte(double value, bool is_float) {
   if (!std::isfinite(value)) return 0;
   const double v = is_float ? value * 255.0 : value;

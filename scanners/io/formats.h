@@ -18,6 +18,8 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "scanners/core/types.h"
@@ -71,6 +73,17 @@ void CheckCount(const ReadOptions& options, const std::filesystem::path& file,
 // index is in [0, num_vertices).
 Eigen::MatrixX3i TrianglesToMatrix(const std::filesystem::path& file,
                                    const std::vector<int>& flat, Eigen::Index num_vertices);
+// Hands out distinct names: `name` itself, else name_2, name_3, ... in
+// amortised constant time (files may repeat a column name 100,000s of times).
+class NameSet {
+ public:
+  std::string Unique(const std::string& name);
+
+ private:
+  std::unordered_set<std::string> used_;
+  std::unordered_map<std::string, int> next_suffix_;
+};
+
 // Maps a colour value to 0-255: integers are clamped, floats (0-1) scaled.
 std::uint8_t ColorByte(double value, bool is_float);
 

@@ -8,7 +8,6 @@
 #include <cstring>
 #include <functional>
 #include <limits>
-#include <set>
 
 #include "scanners/core/errors.h"
 #include "scanners/io/byte_reader.h"
@@ -52,18 +51,16 @@ std::vector<OutField> Fields(const PointCloud& cloud) {
     fields.push_back({"rgb", [&cloud](Eigen::Index i) { return PackedAsFloat(Packed(cloud.colors, i)); },
                       true});
   }
-  std::set<std::string> used;
-  for (const OutField& f : fields) used.insert(f.name);
+  NameSet used;
+  for (const OutField& f : fields) used.Unique(f.name);
   for (const auto& [name, values] : cloud.scalars) {
     if (values.size() != cloud.size()) continue;
-    std::string safe = name.empty() ? std::string("scalar") : name;
+    std::string safe = name.empty() || name == "_" ? std::string("scalar") : name;  // '_' = padding
     for (char& ch : safe) {
       if (ch == ' ' || ch == '\t' || ch == '\n' || ch == '\r') ch = '_';
     }
-    while (used.count(safe)) safe += "_";
-    used.insert(safe);
     const Eigen::VectorXd* v = &values;
-    fields.push_back({safe, [v](Eigen::Index i) { return SafeFloat((*v)[i]); }});
+    fields.push_back({used.Unique(safe), [v](Eigen::Index i) { return SafeFloat((*v)[i]); }});
   }
   return fields;
 }

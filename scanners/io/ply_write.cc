@@ -1,7 +1,6 @@
 // PLY writer: a cloud (and optionally triangles) in ascii, binary little or
 // big endian. Positions and scalars as double (exact round trip), normals as
 // float, colours as uchar, faces as "list uchar int vertex_indices".
-#include <set>
 
 #include "scanners/io/byte_reader.h"
 #include "scanners/io/formats.h"
@@ -45,7 +44,7 @@ std::vector<std::pair<std::string, Column>> VertexColumns(const PointCloud& clou
   const char* xyz[] = {"x", "y", "z"};
   const char* nxyz[] = {"nx", "ny", "nz"};
   const char* rgb[] = {"red", "green", "blue"};
-  std::set<std::string> used;
+  NameSet used;
   for (int c = 0; c < 3; ++c) {
     columns.push_back({xyz[c], Column{&cloud.points, nullptr, nullptr, c, ScalarType::kFloat64}});
   }
@@ -60,13 +59,10 @@ std::vector<std::pair<std::string, Column>> VertexColumns(const PointCloud& clou
       columns.push_back({rgb[c], Column{nullptr, &cloud.colors, nullptr, c, ScalarType::kUint8}});
     }
   }
-  for (const auto& column : columns) used.insert(column.first);
+  for (const auto& column : columns) used.Unique(column.first);
   for (const auto& [name, values] : cloud.scalars) {
     if (values.size() != cloud.size()) continue;
-    std::string safe = SafeName(name);
-    while (used.count(safe)) safe += "_";
-    used.insert(safe);
-    columns.push_back({safe, Column{nullptr, nullptr, &values, 0, ScalarType::kFloat64}});
+    columns.push_back({used.Unique(SafeName(name)), Column{nullptr, nullptr, &values, 0, ScalarType::kFloat64}});
   }
   return columns;
 }

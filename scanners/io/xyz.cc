@@ -38,18 +38,21 @@ bool AllNumbers(const std::vector<std::string_view>& tokens) {
   return true;
 }
 
-// Column roles from names: 0-2 xyz, 3-5 normal, 6-8 colour, -1 scalar.
+// Column roles from names: 0-2 xyz, 3-5 normal, 6-8 colour, -1 scalar. The
+// first column of each name takes the role.
 std::vector<int> Roles(const std::vector<std::string>& names) {
   static const std::vector<std::vector<std::string>> kNames = {
       {"x"}, {"y"}, {"z"}, {"nx", "normal_x"}, {"ny", "normal_y"}, {"nz", "normal_z"},
       {"r", "red"}, {"g", "green"}, {"b", "blue"}};
   std::vector<int> roles(names.size(), -1);
+  bool taken[9] = {};
   for (std::size_t c = 0; c < names.size(); ++c) {
-    for (std::size_t r = 0; r < kNames.size(); ++r) {
+    const std::string name = Lower(names[c]);
+    for (std::size_t r = 0; r < kNames.size() && roles[c] < 0; ++r) {
       const auto& options = kNames[r];
-      const bool taken = std::find(roles.begin(), roles.end(), static_cast<int>(r)) != roles.end();
-      if (!taken && std::find(options.begin(), options.end(), Lower(names[c])) != options.end()) {
+      if (!taken[r] && std::find(options.begin(), options.end(), name) != options.end()) {
         roles[c] = static_cast<int>(r);
+        taken[r] = true;
       }
     }
   }
@@ -95,6 +98,7 @@ RawScan Assemble(const std::filesystem::path& file, std::vector<std::string> nam
       fractional = fractional || x != std::round(x);
     }
   }
+  NameSet scalar_names;
   for (std::size_t c = 0; c < columns.size(); ++c) {
     const std::vector<double>& v = columns[c];
     const int role = roles[c];
@@ -108,9 +112,7 @@ RawScan Assemble(const std::filesystem::path& file, std::vector<std::string> nam
         cloud.colors(i, role - 6) = ColorByte(v[static_cast<std::size_t>(i)], unit_range && fractional);
       }
     } else {
-      std::string name = names[c];
-      while (cloud.scalars.count(name)) name += "_";
-      cloud.scalars[name] = values;
+      cloud.scalars[scalar_names.Unique(names[c])] = values;
     }
   }
   return raw;
@@ -181,13 +183,15 @@ std::string WriteXyz(const WriteOptions& options, const PointCloud& cloud, char 
   if (cloud.has_normals()) names.insert(names.end(), {"nx", "ny", "nz"});
   if (cloud.has_colors()) names.insert(names.end(), {"red", "green", "blue"});
   std::vector<const Eigen::VectorXd*> scalars;
+  NameSet used;
+  for (const std::string& name : names) used.Unique(name);
   for (const auto& [name, values] : cloud.scalars) {
     if (values.size() != cloud.size()) continue;
     std::string safe = name.empty() ? std::string("scalar") : name;
     for (char& c : safe) {
       if (c == ' ' || c == '\t' || c == ',' || c == ';' || c == '#' || c == '\r' || c == '\n') c = '_';
     }
-    names.push_back(safe);
+    names.push_back(used.Unique(safe));
     scalars.push_back(&values);
   }
   out += separator == ' ' ? "//" : "";

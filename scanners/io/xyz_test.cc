@@ -69,6 +69,23 @@ TEST(XyzRead, CloudCompareHeaderUnitColoursAndPtsCount) {
   EXPECT_EQ(pts.cloud.scalars.at("column_4")[1], 20);
 }
 
+TEST(XyzRead, RepeatedColumnNamesGetNumberedInLinearTime) {
+  TempDir dir;
+  const Scan scan = Read(dir, "d.csv", "x,y,z,a,a,a\n1,2,3,4,5,6\n");
+  EXPECT_EQ(scan.cloud.scalars.at("a")[0], 4);
+  EXPECT_EQ(scan.cloud.scalars.at("a_2")[0], 5);
+  EXPECT_EQ(scan.cloud.scalars.at("a_3")[0], 6);
+  // 100,000 columns of one name (a quadratic renaming would take minutes).
+  std::string header = "x y z", values = "1 2 3";
+  for (int i = 0; i < 100000; ++i) {
+    header += " a";
+    values += " 7";
+  }
+  const Scan wide = ReadScanFromBytes(FixtureOptions(), "w.xyz", header + "\n" + values + "\n");
+  EXPECT_EQ(wide.cloud.scalars.size(), 100000u);
+  EXPECT_EQ(wide.cloud.scalars.at("a_100000")[0], 7);
+}
+
 class XyzRoundTrip : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(XyzRoundTrip, EverythingSurvivesExactly) {
