@@ -77,6 +77,43 @@ void MeshBuilder::OrientPatchLike(size_t first) {
   }
 }
 
+void MeshBuilder::SplitEdges(const std::vector<std::pair<std::pair<int, int>, std::vector<int>>>& splits) {
+  std::unordered_map<std::uint64_t, size_t> split_of;  // directed edge -> index into splits (both directions)
+  for (size_t k = 0; k < splits.size(); ++k) {
+    const auto [a, b] = splits[k].first;
+    split_of[EdgeKey(a, b)] = k;
+    split_of[EdgeKey(b, a)] = k;
+  }
+  std::vector<std::array<int, 3>> out;
+  out.reserve(faces_.size() + 4 * splits.size());
+  std::vector<int> uses(splits.size(), 0);
+  for (const auto& f : faces_) {
+    int hit = -1;
+    for (int e = 0; e < 3; ++e) {
+      if (split_of.count(EdgeKey(f[e], f[(e + 1) % 3]))) {
+        BESPOKE_CHECK(hit < 0, "mesh builder: a face has two split edges");
+        hit = e;
+      }
+    }
+    if (hit < 0) {
+      out.push_back(f);
+      continue;
+    }
+    const int a = f[hit], b = f[(hit + 1) % 3], c = f[(hit + 2) % 3];
+    const size_t k = split_of.at(EdgeKey(a, b));
+    ++uses[k];
+    // The chain from a to b along this face's direction of the edge.
+    std::vector<int> chain = {a};
+    const std::vector<int>& inner = splits[k].second;
+    if (splits[k].first.first == a) chain.insert(chain.end(), inner.begin(), inner.end());
+    else chain.insert(chain.end(), inner.rbegin(), inner.rend());
+    chain.push_back(b);
+    for (size_t i = 0; i + 1 < chain.size(); ++i) out.push_back({chain[i], chain[i + 1], c});
+  }
+  for (int u : uses) BESPOKE_CHECK(u == 2, "mesh builder: a split edge is not shared by exactly two faces");
+  faces_ = std::move(out);
+}
+
 void MeshBuilder::FlipAll() {
   for (auto& f : faces_) std::swap(f[1], f[2]);
 }

@@ -33,6 +33,13 @@ class MeshBuilder {
   // Triangles closing `ring` at `pole`, oriented like Stitch(ring, {pole...}).
   void Fan(const std::vector<int>& ring, int pole);
 
+  // Splits edges: each entry is an edge (a, b) of the mesh (either
+  // direction) and the new vertices between a and b, in order from a. Every
+  // face using the edge is replaced by a fan from its opposite vertex, so the
+  // mesh stays closed and consistently oriented. InternalError when an edge
+  // is missing or a face would be split twice.
+  void SplitEdges(const std::vector<std::pair<std::pair<int, int>, std::vector<int>>>& splits);
+
   // Flips faces [first, num_faces()) when they disagree with the faces
   // before `first` on a shared edge. InternalError when they share no edge
   // or disagree among themselves.

@@ -106,6 +106,42 @@ double SidewaysChange(const Section& x, const Section& y) {
                    std::abs((x.cv - x.back.b) - (y.cv - y.back.b))});
 }
 
+void RefineGirthRings(Build* b, int min_segments) {
+  std::vector<std::pair<std::pair<int, int>, std::vector<int>>> splits;
+  const auto on_curve = [](const GirthRing& g, const Eigen::Vector3d& p) {
+    const Eigen::Vector3d d = p - g.origin;
+    const Eigen::Vector2d uv(d.dot(g.axis_u), d.dot(g.axis_v)), centre(g.section.cu, g.section.cv);
+    const Eigen::Vector2d q = centre + (uv - centre) / g.section.Gauge(uv);
+    return Eigen::Vector3d(g.origin + q.x() * g.axis_u + q.y() * g.axis_v);
+  };
+  for (GirthRing& g : b->girths) {
+    const int n = static_cast<int>(g.ring.size());
+    const int k = (min_segments + n - 1) / n;
+    if (k <= 1) continue;
+    std::vector<int> refined;
+    for (int i = 0; i < n; ++i) {
+      const int a = g.ring[static_cast<size_t>(i)], c = g.ring[static_cast<size_t>((i + 1) % n)];
+      const Eigen::Vector3d pa = b->mesh.position(a), pc = b->mesh.position(c);
+      std::vector<int> inner, inner_left;
+      refined.push_back(a);
+      for (int j = 1; j < k; ++j) {
+        const Eigen::Vector3d p = on_curve(g, pa + (pc - pa) * (static_cast<double>(j) / k));
+        inner.push_back(b->mesh.Add(p));
+        refined.push_back(inner.back());
+        if (g.limb) {  // the left limb's ring: the exact mirror image
+          inner_left.push_back(b->mesh.Add({-p.x(), p.y(), p.z()}));
+          b->SetMirror(inner.back(), inner_left.back());
+        }
+      }
+      splits.push_back({{a, c}, inner});
+      if (g.limb) splits.push_back({{b->Mirror(a), b->Mirror(c)}, inner_left});
+    }
+    g.ring = refined;
+  }
+  b->mirror.resize(static_cast<size_t>(b->mesh.num_vertices()), -1);
+  b->mesh.SplitEdges(splits);
+}
+
 void Build::SetMirror(int a, int b_) {
   const size_t need = static_cast<size_t>(std::max(a, b_)) + 1;
   if (mirror.size() < need) mirror.resize(need, -1);
@@ -259,6 +295,11 @@ void AddTorsoLandmarksAndGirths(Build* b) {
     g.section = key.section;
     g.plane_point = {key.section.cu, key.section.cv, key.at};
     g.plane_normal = {0, std::sin(key.tilt), std::cos(key.tilt)};
+    // Ring point (u, v) -> (u, cv + (v - cv) cos t, at - (v - cv) sin t).
+    const double c = std::cos(key.tilt), s = std::sin(key.tilt), cv = key.section.cv;
+    g.origin = {0, cv * (1 - c), key.at + cv * s};
+    g.axis_u = Eigen::Vector3d::UnitX();
+    g.axis_v = {0, c, -s};
     b->girths.push_back(g);
   }
   const auto at = [b](double z, int column) {
@@ -360,6 +401,26 @@ Body GenerateParametricBody(const ParametricBodyOptions& options, ParametricBody
   parametric::BuildLegs(&b);
   parametric::BuildArms(&b);
   AddTorsoLandmarksAndGirths(&b);
+  std::vector<BodyPart> part(static_cast<size_t>(b.mesh.num_vertices()), BodyPart::kTorso);
+  for (size_t k = 0; k < b.part_starts.size(); ++k) {
+    const int end = k + 1 < b.part_starts.size() ? b.part_starts[k + 1].first : b.mesh.num_vertices();
+    for (int v = b.part_starts[k].first; v < end; ++v) part[static_cast<size_t>(v)] = b.part_starts[k].second;
+  }
+  const std::vector<std::vector<int>> girth_rings_before = [&] {
+    std::vector<std::vector<int>> r;
+    for (const auto& g : b.girths) r.push_back(g.ring);
+    return r;
+  }();
+  parametric::RefineGirthRings(&b, layout.options.girth_ring_segments);
+  part.resize(static_cast<size_t>(b.mesh.num_vertices()), BodyPart::kTorso);
+  for (size_t k = 0; k < b.girths.size(); ++k) {  // new ring vertices take their ring's part
+    const BodyPart p = part[static_cast<size_t>(girth_rings_before[k][0])];
+    for (int v : b.girths[k].ring) {
+      part[static_cast<size_t>(v)] = p;
+      if (b.girths[k].limb) part[static_cast<size_t>(b.Mirror(v))] = p == BodyPart::kArmRight ? BodyPart::kArmLeft
+                                                                   : p == BodyPart::kLegRight ? BodyPart::kLegLeft : p;
+    }
+  }
 
   Body body;
   body.model = "parametric";
@@ -405,11 +466,7 @@ Body GenerateParametricBody(const ParametricBodyOptions& options, ParametricBody
   }
   if (details) {
     details->girths = std::move(all);
-    details->part.assign(static_cast<size_t>(body.mesh.num_vertices()), BodyPart::kTorso);
-    for (size_t k = 0; k < b.part_starts.size(); ++k) {
-      const int end = k + 1 < b.part_starts.size() ? b.part_starts[k + 1].first : static_cast<int>(body.mesh.num_vertices());
-      for (int v = b.part_starts[k].first; v < end; ++v) details->part[static_cast<size_t>(v)] = b.part_starts[k].second;
-    }
+    details->part = std::move(part);
   }
   return body;
 }

@@ -71,9 +71,10 @@ struct ParametricBodyOptions {
   // and then change some sizes, call SeededOptions(), edit, and generate.
   std::uint64_t seed = 0;
   // --- resolution ---
-  int torso_segments = 192;        // vertices around each torso ring (multiple of 8, >= 64)
-  int arm_segments = 112;          // vertices around each arm ring (multiple of 4, >= 48)
-  double ring_spacing_mm = 20;     // target distance between rings (mm, 2-40); ~46k vertices by default
+  int torso_segments = 64;         // vertices around each torso and leg ring (multiple of 8, >= 48)
+  int arm_segments = 48;           // vertices around each arm ring (multiple of 4, >= 32)
+  double ring_spacing_mm = 15;     // target distance between rings (mm, 2-40)
+  int girth_ring_segments = 256;   // girth rings get at least this many vertices (edges split, >= 16)
   double max_girth_deficit_mm = 0.1;  // ring polygon vs analytic perimeter; InternalError above
   std::uint64_t drawn_from_seed = 0;  // set by SeededOptions (reporting only)
 

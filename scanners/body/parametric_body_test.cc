@@ -21,9 +21,10 @@ Eigen::Vector3d At(const Body& body, const std::string& name) {
 ParametricBodyOptions Coarse(double abduction_deg) {
   ParametricBodyOptions o;
   o.arm_abduction_deg = abduction_deg;
-  o.torso_segments = 96;
-  o.arm_segments = 64;
+  o.torso_segments = 48;
+  o.arm_segments = 32;
   o.ring_spacing_mm = 25;
+  o.girth_ring_segments = 128;
   o.max_girth_deficit_mm = 1.0;
   return o;
 }

@@ -19,6 +19,9 @@ struct GirthRing {
   Section section;                // the analytic shape in the ring's plane
   Eigen::Vector3d plane_point;    // body frame, mm
   Eigen::Vector3d plane_normal;   // unit
+  // The section's coordinates: a point (u, v) of `section` is at
+  // origin + u * axis_u + v * axis_v (body frame, mm).
+  Eigen::Vector3d origin, axis_u, axis_v;
   bool limb = false;              // true: mirrored to the left side as well
 };
 
@@ -55,6 +58,12 @@ void BuildArms(Build* b);
 // Ring levels between `from` and `to` (exclusive of `from`, inclusive of
 // `to`), at most `spacing` apart, at least `min_steps` steps.
 std::vector<double> Subdivide(double from, double to, double spacing, int min_steps = 1);
+
+// Splits the edges of every girth ring (and the mirrored left limb rings) so
+// that each ring has at least `min_segments` vertices; the new vertices lie
+// exactly on the analytic section (radial projection from its centre).
+// Faces beside the rings become fans; everything stays closed.
+void RefineGirthRings(Build* b, int min_segments);
 
 // Largest horizontal change between two sections (mm): how far a ring
 // moves sideways between them, used to place enough rings.

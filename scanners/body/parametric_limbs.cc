@@ -35,8 +35,12 @@ std::vector<double> LevelsDown(const std::vector<SectionKey>& keys, double spaci
 }
 
 void AddLimbGirth(Build* b, const std::string& name, const std::vector<int>& ring, const Section& section,
-                  const Eigen::Vector3d& point, const Eigen::Vector3d& normal) {
+                  const Eigen::Vector3d& point, const Eigen::Vector3d& normal, const Eigen::Vector3d& origin,
+                  const Eigen::Vector3d& axis_u, const Eigen::Vector3d& axis_v) {
   GirthRing g;
+  g.origin = origin;
+  g.axis_u = axis_u;
+  g.axis_v = axis_v;
   g.measurement = name;
   g.ring = ring;
   g.section = section;
@@ -92,7 +96,8 @@ void BuildLegs(Build* b) {
   for (const SectionKey& key : L.leg) {
     if (key.girth.empty()) continue;
     AddLimbGirth(b, key.girth, right[IndexOf(levels, key.at)], key.section,
-                 {key.section.cu, key.section.cv, key.at}, Eigen::Vector3d::UnitZ());
+                 {key.section.cu, key.section.cv, key.at}, Eigen::Vector3d::UnitZ(),
+                 {0, 0, key.at}, Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY());
   }
   const auto vertex = [&](double z, int m) { return right[IndexOf(levels, z)][static_cast<size_t>(m)]; };
   b->landmarks["thigh_right"] = vertex(L.z_thigh, 3 * q);
@@ -250,7 +255,9 @@ void BuildArms(Build* b) {
   const auto ring_at = [&](double s) { return right[IndexOf(stations, s)]; };
   for (const SectionKey& key : keys) {
     if (key.girth.empty()) continue;
-    AddLimbGirth(b, key.girth, ring_at(key.at), key.section, path.Centre(key.at), normal_at(key.at));
+    const Eigen::Quaterniond r = Eigen::Quaterniond::FromTwoVectors(path.T(key.at), normal_at(key.at));
+    AddLimbGirth(b, key.girth, ring_at(key.at), key.section, path.Centre(key.at), normal_at(key.at),
+                 path.Centre(key.at), r * path.U(key.at), r * Eigen::Vector3d::UnitY());
   }
   b->landmarks["upper_arm_right"] = ring_at(keys[1].at)[0];
   b->landmarks["elbow_right"] = ring_at(keys[2].at)[static_cast<size_t>(3 * q)];

@@ -87,10 +87,12 @@ void ParametricBodyOptions::Check() const {
   CheckRatio("wrist_girth_mm", wrist_girth_mm, "upper_arm_girth_mm", upper_arm_girth_mm, 0.4, 0.75);
   CheckRatio("shoulder_width_mm", shoulder_width_mm, "chest girth / pi", chest_girth_mm / 3.14159,
              1.0, 1.6);
-  if (torso_segments < 64 || torso_segments > 2048 || torso_segments % 8 != 0)
-    throw InputError("parametric body: torso_segments must be a multiple of 8 in [64, 2048]");
-  if (arm_segments < 48 || arm_segments > 1024 || arm_segments % 4 != 0)
-    throw InputError("parametric body: arm_segments must be a multiple of 4 in [48, 1024]");
+  if (torso_segments < 48 || torso_segments > 2048 || torso_segments % 8 != 0)
+    throw InputError("parametric body: torso_segments must be a multiple of 8 in [48, 2048]");
+  if (arm_segments < 32 || arm_segments > 1024 || arm_segments % 4 != 0)
+    throw InputError("parametric body: arm_segments must be a multiple of 4 in [32, 1024]");
+  if (girth_ring_segments < 16 || girth_ring_segments > 8192)
+    throw InputError("parametric body: girth_ring_segments must be in [16, 8192]");
   CheckRange("ring_spacing_mm", ring_spacing_mm, 2, 40);
   CheckRange("max_girth_deficit_mm", max_girth_deficit_mm, 1e-6, 100);
 }
@@ -101,9 +103,12 @@ void ParametricBodyOptions::Set(const std::string& name, double value) {
     seed = static_cast<std::uint64_t>(value);
     return;
   }
-  if (name == "torso_segments" || name == "arm_segments") {
-    if (value != std::floor(value)) throw InputError("parametric body: " + name + " must be a whole number");
-    (name == "torso_segments" ? torso_segments : arm_segments) = static_cast<int>(value);
+  if (name == "torso_segments" || name == "arm_segments" || name == "girth_ring_segments") {
+    if (value != std::floor(value) || !(std::abs(value) < 1e6)) {
+      throw InputError("parametric body: " + name + " must be a whole number");
+    }
+    (name == "torso_segments" ? torso_segments : name == "arm_segments" ? arm_segments : girth_ring_segments) =
+        static_cast<int>(value);
     return;
   }
   for (const auto& [field, member] : DoubleFields()) {
@@ -112,7 +117,7 @@ void ParametricBodyOptions::Set(const std::string& name, double value) {
       return;
     }
   }
-  std::string known = "seed, torso_segments, arm_segments";
+  std::string known = "seed, torso_segments, arm_segments, girth_ring_segments";
   for (const auto& field : DoubleFields()) known += std::string(", ") + field.first;
   throw InputError("parametric body: unknown parameter '" + name + "' (known: " + known + ")");
 }
@@ -124,6 +129,7 @@ std::map<std::string, double> ParametricBodyOptions::ToMap() const {
   out["drawn_from_seed"] = static_cast<double>(drawn_from_seed);
   out["torso_segments"] = torso_segments;
   out["arm_segments"] = arm_segments;
+  out["girth_ring_segments"] = girth_ring_segments;
   return out;
 }
 
@@ -164,6 +170,7 @@ ParametricBodyOptions SeededOptions(const ParametricBodyOptions& options) {
     o.torso_segments = options.torso_segments;
     o.arm_segments = options.arm_segments;
     o.ring_spacing_mm = options.ring_spacing_mm;
+    o.girth_ring_segments = options.girth_ring_segments;
     o.max_girth_deficit_mm = options.max_girth_deficit_mm;
     const double stature_scale = 1 + 0.038 * clipped();       // SD about 65 mm
     const double build = 1 + 0.10 * clipped();                // light to heavy
