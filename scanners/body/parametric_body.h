@@ -14,12 +14,17 @@
 //    between the armpit and the shoulder, sweeps along a bend from the
 //    horizontal (+x) into the arm's direction, with rings perpendicular to
 //    the arm, and is closed by a cap at the hand.
-// Girths: every girth level is a ring of vertices lying exactly in the girth
-// plane; the ring is a convex curve (two superellipse halves, possibly with a
-// flat middle part) whose perimeter is computed analytically (adaptive
-// Gauss-Kronrod quadrature, relative accuracy 1e-10) and scaled to the
-// requested girth. The polygon through the ring's vertices is shorter than
-// that curve by less than `max_girth_deficit_mm` (checked; see AnalyticGirth).
+// Girths: every girth level is a ring of vertices lying exactly in the
+// catalogue's girth plane (horizontal; the neck base tilted through the back
+// and front neck points; arm girths perpendicular to the catalogue's axis).
+// The ring lies on a convex curve (two superellipse halves, possibly with a
+// flat middle part, body_section.h) whose perimeter is computed analytically
+// (adaptive Gauss-Kronrod quadrature, relative error 1e-10) and scaled to
+// the requested girth. Girth rings are refined to at least
+// `girth_ring_segments` vertices (their edges split, new vertices on the
+// curve), so the ring polygon is shorter than the curve by less than
+// `max_girth_deficit_mm` (checked) while the rest of the mesh stays light
+// (about 23k vertices by default) for exact geodesics.
 //
 // Frame: body frame, millimetres, +z up, soles on z = 0, origin centred
 // between the feet, facing +y, the person's right is +x.
@@ -75,7 +80,7 @@ struct ParametricBodyOptions {
   int arm_segments = 48;           // vertices around each arm ring (multiple of 4, >= 32)
   double ring_spacing_mm = 15;     // target distance between rings (mm, 2-40)
   int girth_ring_segments = 256;   // girth rings get at least this many vertices (edges split, >= 16)
-  double max_girth_deficit_mm = 0.1;  // ring polygon vs analytic perimeter; InternalError above
+  double max_girth_deficit_mm = 0.1;  // ring polygon vs analytic perimeter (mm); InternalError above
   std::uint64_t drawn_from_seed = 0;  // set by SeededOptions (reporting only)
 
   // Throws InputError naming the parameter when a value is out of range.
