@@ -138,14 +138,14 @@ int Run(CleanCommandOptions& o, const GlobalOptions& global) {
   auto start = std::chrono::steady_clock::now();
   ReadOptions read;
   if (!o.units.empty()) read.units = ParseLengthUnit(o.units);
-  const Scan scan = ReadScan(read, o.scan);
+  Scan scan = ReadScan(read, o.scan);
   const double read_s = Seconds(start);
   for (const std::string& w : scan.report.warnings) spdlog::warn("{}: {}", o.scan.string(), w);
 
   CleanResult result;
   {
     ProgressBar bar(global.quiet);
-    result = CleanScan(o.clean, scan.cloud, &bar);
+    result = CleanScan(o.clean, std::move(scan.cloud), &bar);
   }
 
   start = std::chrono::steady_clock::now();

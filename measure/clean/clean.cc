@@ -68,8 +68,7 @@ void CleanOptions::Check() const {
   body_frame.Check();
 }
 
-CleanResult CleanScan(const CleanOptions& options, const PointCloud& scanner_cloud,
-                      Progress* progress) {
+CleanResult CleanScan(const CleanOptions& options, PointCloud scanner_cloud, Progress* progress) {
   options.Check();
   scanner_cloud.CheckShapes();
   const auto start = std::chrono::steady_clock::now();
@@ -77,29 +76,30 @@ CleanResult CleanScan(const CleanOptions& options, const PointCloud& scanner_clo
   Chain chain(&result, progress);
   PointCloud cloud;
 
+  const Eigen::Index points_in = scanner_cloud.size();
   chain.Run("finite", true, &cloud, [&] {
-    std::vector<Eigen::Index> kept;
-    for (Eigen::Index i = 0; i < scanner_cloud.size(); ++i) {
-      const auto p = scanner_cloud.points.row(i);
-      if (p.allFinite() && p.cwiseAbs().maxCoeff() < kMaxCoordinateMm) kept.push_back(i);
+    // |x| < 1e7 is false for NaN, so one test covers NaN, Inf and absurd values.
+    const Eigen::Array<bool, Eigen::Dynamic, 1> ok =
+        (scanner_cloud.points.array().abs() < kMaxCoordinateMm).rowwise().all();
+    result.non_finite_dropped = points_in - ok.count();
+    if (result.non_finite_dropped == 0) {
+      cloud = std::move(scanner_cloud);
+      return;
     }
-    result.non_finite_dropped = scanner_cloud.size() - static_cast<std::int64_t>(kept.size());
-    cloud = static_cast<Eigen::Index>(kept.size()) == scanner_cloud.size() ? scanner_cloud
-                                                                          : scanner_cloud.Select(kept);
+    std::vector<Eigen::Index> kept;
+    kept.reserve(static_cast<size_t>(ok.count()));
+    for (Eigen::Index i = 0; i < points_in; ++i) {
+      if (ok(i)) kept.push_back(i);
+    }
+    cloud = scanner_cloud.Select(kept);
   });
-  result.stages.back().points_in = scanner_cloud.size();
+  result.stages.back().points_in = points_in;
   RequirePoints(cloud, "dropping non-finite points");
 
   chain.Run("voxel_grid", options.use_voxel_grid, &cloud,
             [&] { cloud = VoxelGridDownsample(options.voxel_grid, cloud); });
 
-  int k = 0;
-  if (options.use_statistical_outliers) k = std::max(k, options.statistical_outliers.mean_k);
-  if (options.use_radius_outliers) k = std::max(k, options.radius_outliers.min_neighbors);
-  if (options.use_normals) k = std::max(k, options.normals.k);
-  NeighbourLists neighbours;
-  chain.Run("neighbours", k > 0, &cloud,
-            [&] { neighbours = FindNearestNeighbours(cloud.points, k, options.threads); });
+  NeighbourLists neighbours;  // computed after the floor is gone
 
   auto keep_only = [&](const std::vector<bool>& keep) {
     const std::vector<Eigen::Index> kept = Kept(keep);
@@ -107,12 +107,6 @@ CleanResult CleanScan(const CleanOptions& options, const PointCloud& scanner_clo
     cloud = cloud.Select(kept);
     if (neighbours.k > 0) neighbours = neighbours.Restrict(kept);
   };
-  chain.Run("statistical_outliers", options.use_statistical_outliers, &cloud,
-            [&] { keep_only(StatisticalOutliers(options.statistical_outliers, neighbours).keep); });
-  chain.Run("radius_outliers", options.use_radius_outliers, &cloud,
-            [&] { keep_only(RadiusOutliers(options.radius_outliers, neighbours).keep); });
-  RequirePoints(cloud, "outlier removal");
-
   chain.Run("floor", options.use_floor, &cloud, [&] {
     FloorResult floor = RemoveFloor(options.floor, cloud.points);
     if (floor.found) {
@@ -124,6 +118,19 @@ CleanResult CleanScan(const CleanOptions& options, const PointCloud& scanner_clo
     }
   });
   RequirePoints(cloud, "floor removal");
+
+  int k = 0;
+  if (options.use_statistical_outliers) k = std::max(k, options.statistical_outliers.mean_k);
+  if (options.use_radius_outliers) k = std::max(k, options.radius_outliers.min_neighbors);
+  if (options.use_normals) k = std::max(k, options.normals.k);
+  chain.Run("neighbours", k > 0, &cloud,
+            [&] { neighbours = FindNearestNeighbours(cloud.points, k, options.threads); });
+
+  chain.Run("statistical_outliers", options.use_statistical_outliers, &cloud,
+            [&] { keep_only(StatisticalOutliers(options.statistical_outliers, neighbours).keep); });
+  chain.Run("radius_outliers", options.use_radius_outliers, &cloud,
+            [&] { keep_only(RadiusOutliers(options.radius_outliers, neighbours).keep); });
+  RequirePoints(cloud, "outlier removal");
 
   chain.Run("largest_cluster", options.use_largest_cluster, &cloud, [&] {
     const Clusters clusters = EuclideanClusters(options.cluster, cloud.points);

@@ -42,51 +42,104 @@ std::vector<Eigen::Index> RandomSubset(Eigen::Index n, int size, unsigned seed) 
 }
 
 // RANSAC planes on the subset, each on what the previous ones left.
-std::vector<Candidate> FindCandidates(const FloorOptions& options, const Eigen::MatrixX3d& subset) {
-  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
-  cloud->resize(static_cast<size_t>(subset.rows()));
-  for (Eigen::Index i = 0; i < subset.rows(); ++i) {
-    (*cloud)[static_cast<size_t>(i)] = pcl::PointXYZ(static_cast<float>(subset(i, 0)),
-                                                    static_cast<float>(subset(i, 1)),
-                                                    static_cast<float>(subset(i, 2)));
+class PlaneFinder {
+ public:
+  PlaneFinder(const FloorOptions& options, const Eigen::MatrixX3d& subset)
+      : cloud_(new pcl::PointCloud<pcl::PointXYZ>), remaining_(new pcl::Indices) {
+    cloud_->resize(static_cast<size_t>(subset.rows()));
+    for (Eigen::Index i = 0; i < subset.rows(); ++i) {
+      (*cloud_)[static_cast<size_t>(i)] = pcl::PointXYZ(static_cast<float>(subset(i, 0)),
+                                                       static_cast<float>(subset(i, 1)),
+                                                       static_cast<float>(subset(i, 2)));
+    }
+    remaining_->resize(cloud_->size());
+    std::iota(remaining_->begin(), remaining_->end(), 0);
+    min_inliers_ = std::max<size_t>(
+        50, static_cast<size_t>(options.min_inlier_fraction * static_cast<double>(subset.rows())));
+    segmentation_.setModelType(pcl::SACMODEL_PLANE);
+    segmentation_.setMethodType(pcl::SAC_RANSAC);
+    segmentation_.setDistanceThreshold(options.distance_mm);
+    segmentation_.setMaxIterations(options.ransac_iterations);
+    segmentation_.setOptimizeCoefficients(true);
+    segmentation_.setInputCloud(cloud_);
   }
-  pcl::IndicesPtr remaining(new pcl::Indices(cloud->size()));
-  std::iota(remaining->begin(), remaining->end(), 0);
-  const auto min_inliers = std::max<size_t>(
-      50, static_cast<size_t>(options.min_inlier_fraction * static_cast<double>(subset.rows())));
 
-  pcl::SACSegmentation<pcl::PointXYZ> segmentation;
-  segmentation.setModelType(pcl::SACMODEL_PLANE);
-  segmentation.setMethodType(pcl::SAC_RANSAC);
-  segmentation.setDistanceThreshold(options.distance_mm);
-  segmentation.setMaxIterations(options.ransac_iterations);
-  segmentation.setOptimizeCoefficients(true);
-  segmentation.setInputCloud(cloud);
-
-  std::vector<Candidate> candidates;
-  for (int p = 0; p < options.max_planes && remaining->size() >= min_inliers; ++p) {
+  // The next plane, or false when none holds enough points.
+  bool Next(Candidate* candidate) {
+    if (remaining_->size() < min_inliers_) return false;
     pcl::PointIndices inliers;
     pcl::ModelCoefficients coefficients;
-    segmentation.setIndices(remaining);
-    segmentation.segment(inliers, coefficients);
-    if (inliers.indices.size() < min_inliers || coefficients.values.size() != 4) break;
-    Eigen::Vector3d normal(coefficients.values[0], coefficients.values[1], coefficients.values[2]);
+    segmentation_.setIndices(remaining_);
+    segmentation_.segment(inliers, coefficients);
+    if (inliers.indices.size() < min_inliers_ || coefficients.values.size() != 4) return false;
+    const Eigen::Vector3d normal(coefficients.values[0], coefficients.values[1], coefficients.values[2]);
     const double norm = normal.norm();
-    if (!(norm > 0)) break;
-    Candidate candidate;
-    candidate.plane.up = normal / norm;
-    candidate.plane.offset_mm = coefficients.values[3] / norm;
-    candidate.subset_inliers.assign(inliers.indices.begin(), inliers.indices.end());
-    candidates.push_back(std::move(candidate));
-    std::vector<bool> taken(cloud->size(), false);
+    if (!(norm > 0)) return false;
+    candidate->plane.up = normal / norm;
+    candidate->plane.offset_mm = coefficients.values[3] / norm;
+    candidate->subset_inliers.assign(inliers.indices.begin(), inliers.indices.end());
+    std::vector<bool> taken(cloud_->size(), false);
     for (int i : inliers.indices) taken[static_cast<size_t>(i)] = true;
     auto next = std::make_shared<pcl::Indices>();
-    for (int i : *remaining) {
+    for (int i : *remaining_) {
       if (!taken[static_cast<size_t>(i)]) next->push_back(i);
     }
-    remaining = next;
+    remaining_ = next;
+    return true;
   }
-  return candidates;
+
+ private:
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud_;
+  pcl::IndicesPtr remaining_;
+  size_t min_inliers_ = 50;
+  pcl::SACSegmentation<pcl::PointXYZ> segmentation_;
+};
+
+// The body: the largest cluster of the subset points on none of the
+// candidate planes (not a chair or a pole beside it, nor stray points).
+// Empty, with `why` set, when there is no such cluster.
+Eigen::MatrixX3d BodyCluster(const FloorOptions& options, const Eigen::MatrixX3d& subset,
+                             const std::vector<Candidate>& candidates, std::string* why) {
+  std::vector<bool> on_plane(static_cast<size_t>(subset.rows()), false);
+  for (const Candidate& c : candidates) {
+    for (int i : c.subset_inliers) on_plane[static_cast<size_t>(i)] = true;
+  }
+  std::vector<Eigen::Index> off;
+  for (Eigen::Index i = 0; i < subset.rows(); ++i) {
+    if (!on_plane[static_cast<size_t>(i)]) off.push_back(i);
+  }
+  if (off.size() < 100) {
+    *why = "almost all points lie on planes; no body above a floor";
+    return {};
+  }
+  Eigen::MatrixX3d off_points(static_cast<Eigen::Index>(off.size()), 3);
+  for (size_t i = 0; i < off.size(); ++i) off_points.row(static_cast<Eigen::Index>(i)) = subset.row(off[i]);
+  ClusterOptions cluster;
+  cluster.tolerance_mm = options.body_gap_mm;
+  const Clusters clusters = EuclideanClusters(cluster, off_points);
+  if (clusters.sizes.front() < 50) {
+    *why = "the points off the planes are scattered; no body above a floor";
+    return {};
+  }
+  Eigen::MatrixX3d body(clusters.sizes.front(), 3);
+  for (Eigen::Index i = 0, row = 0; i < off_points.rows(); ++i) {
+    if (clusters.label[static_cast<size_t>(i)] == 0) body.row(row++) = off_points.row(i);
+  }
+  return body;
+}
+
+// A standing body is taller along `up` than it is wide across it (A-pose
+// ~1.6x; a floor with a body on it seen from a wall is not).
+bool StandsAlong(const Eigen::MatrixX3d& body, const Eigen::Vector3d& up) {
+  const Eigen::Vector3d e1 = up.unitOrthogonal(), e2 = up.cross(e1);
+  auto span = [&](const Eigen::Vector3d& axis) {
+    std::vector<double> t(static_cast<size_t>(body.rows()));
+    for (Eigen::Index i = 0; i < body.rows(); ++i) t[static_cast<size_t>(i)] = axis.dot(body.row(i).transpose());
+    std::sort(t.begin(), t.end());
+    return t[t.size() * 99 / 100] - t[t.size() / 100];
+  };
+  const double across = std::max({span(e1), span(e2), span((e1 + e2).normalized()), span((e1 - e2).normalized())});
+  return span(up) >= 1.2 * across;
 }
 
 Eigen::Vector3d MajorAxis(const Eigen::MatrixX3d& points) {
@@ -191,58 +244,54 @@ FloorResult RemoveFloor(const FloorOptions& options, const Eigen::MatrixX3d& poi
   for (size_t i = 0; i < subset_rows.size(); ++i) {
     subset.row(static_cast<Eigen::Index>(i)) = points.row(subset_rows[i]);
   }
-  std::vector<Candidate> candidates = FindCandidates(options, subset);
+  // Candidate planes. The first is usually the floor: when it clearly is
+  // (body on one side, along its normal and standing tall on it) the other
+  // RANSAC runs, which would cost 10x more, are skipped.
+  PlaneFinder finder(options, subset);
+  std::vector<Candidate> candidates;
+  int best = -1;
+  for (Candidate c; static_cast<int>(candidates.size()) < options.max_planes && finder.Next(&c);) {
+    candidates.push_back(c);
+    if (candidates.size() > 1) continue;
+    std::string why;
+    const Eigen::MatrixX3d body = BodyCluster(options, subset, candidates, &why);
+    if (body.rows() == 0) continue;
+    FloorPlane plane = c.plane;
+    if (Accept(options, body, MajorAxis(body), &plane, &why) && StandsAlong(body, plane.up)) {
+      candidates.front().plane = plane;
+      best = 0;
+      break;
+    }
+  }
   result.candidates = static_cast<int>(candidates.size());
   if (candidates.empty()) {
     result.note = "RANSAC found no plane holding enough points";
     return result;
   }
-
-  std::vector<bool> on_plane(static_cast<size_t>(subset.rows()), false);
-  for (const Candidate& c : candidates) {
-    for (int i : c.subset_inliers) on_plane[static_cast<size_t>(i)] = true;
-  }
-  std::vector<Eigen::Index> off;
-  for (Eigen::Index i = 0; i < subset.rows(); ++i) {
-    if (!on_plane[static_cast<size_t>(i)]) off.push_back(i);
-  }
-  if (off.size() < 100) {
-    result.note = "almost all points lie on planes; no body above a floor";
-    return result;
-  }
-  Eigen::MatrixX3d off_points(static_cast<Eigen::Index>(off.size()), 3);
-  for (size_t i = 0; i < off.size(); ++i) off_points.row(static_cast<Eigen::Index>(i)) = subset.row(off[i]);
-  // The body: the largest cluster of what the planes leave (not a chair or
-  // the scanner's frame beside it, nor scattered stray points).
-  ClusterOptions cluster;
-  cluster.tolerance_mm = options.body_gap_mm;
-  const Clusters clusters = EuclideanClusters(cluster, off_points);
-  Eigen::MatrixX3d body(clusters.sizes.front(), 3);
-  for (Eigen::Index i = 0, row = 0; i < off_points.rows(); ++i) {
-    if (clusters.label[static_cast<size_t>(i)] == 0) body.row(row++) = off_points.row(i);
-  }
-  if (body.rows() < 50) {
-    result.note = "the points off the planes are scattered; no body above a floor";
-    return result;
-  }
-  const Eigen::Vector3d axis = MajorAxis(body);
-
-  int best = -1;
-  std::string reasons;
-  for (size_t c = 0; c < candidates.size(); ++c) {
-    std::string why;
-    if (Accept(options, body, axis, &candidates[c].plane, &why)) {
-      if (best < 0 || candidates[c].subset_inliers.size() >
-                          candidates[static_cast<size_t>(best)].subset_inliers.size()) {
-        best = static_cast<int>(c);
-      }
-    } else {
-      reasons += (reasons.empty() ? "" : "; ") + ("plane " + std::to_string(c + 1) + ": " + why);
-    }
-  }
   if (best < 0) {
-    result.note = "no plane qualifies as the floor (" + reasons + ")";
-    return result;
+    // All candidates against the body left by all of them.
+    std::string reasons;
+    const Eigen::MatrixX3d body = BodyCluster(options, subset, candidates, &reasons);
+    if (body.rows() == 0) {
+      result.note = reasons;
+      return result;
+    }
+    const Eigen::Vector3d axis = MajorAxis(body);
+    for (size_t c = 0; c < candidates.size(); ++c) {
+      std::string why;
+      if (Accept(options, body, axis, &candidates[c].plane, &why)) {
+        if (best < 0 || candidates[c].subset_inliers.size() >
+                            candidates[static_cast<size_t>(best)].subset_inliers.size()) {
+          best = static_cast<int>(c);
+        }
+      } else {
+        reasons += (reasons.empty() ? "" : "; ") + ("plane " + std::to_string(c + 1) + ": " + why);
+      }
+    }
+    if (best < 0) {
+      result.note = "no plane qualifies as the floor (" + reasons + ")";
+      return result;
+    }
   }
 
   FloorPlane plane = candidates[static_cast<size_t>(best)].plane;
