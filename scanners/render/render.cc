@@ -196,15 +196,21 @@ RgbImage Render(const RenderOptions& options, const RenderScene& scene) {
   bool any = false;
   for (View view : options.views) {
     Canvas c{view, 1e300, -1e300, 1e300, -1e300, 1.0, title_px};
-    ForEachPoint(scene, [&](const Eigen::Vector3d& p) {
-      if (!p.allFinite()) throw InputError("render: the scene has a point that is not finite");
+    const auto grow = [&c, view](const Eigen::Vector3d& p) {
       const Projected q = Project(view, p);
       c.min_x = std::min(c.min_x, q.sx);
       c.max_x = std::max(c.max_x, q.sx);
       c.min_y = std::min(c.min_y, q.sy);
       c.max_y = std::max(c.max_y, q.sy);
+    };
+    ForEachPoint(scene, [&](const Eigen::Vector3d& p) {
+      if (!p.allFinite()) throw InputError("render: the scene has a point that is not finite");
+      if (options.bounds.isEmpty()) grow(p);
       any = true;
     });
+    if (!options.bounds.isEmpty()) {
+      for (int k = 0; k < 8; ++k) grow(options.bounds.corner(static_cast<Eigen::AlignedBox3d::CornerType>(k)));
+    }
     if (!any) throw InputError("render: nothing to draw (no mesh, cloud, points or lines)");
     c.min_x -= options.margin_mm;
     c.max_x += options.margin_mm;
@@ -222,9 +228,20 @@ RgbImage Render(const RenderOptions& options, const RenderScene& scene) {
   cv::Mat image(options.height_px, width, CV_8UC3, Bgr(options.background));
   double radius = options.point_radius_px;
   if (radius == 0 && scene.cloud && !scene.cloud->empty()) {
-    const Eigen::Vector3d e = scene.cloud->points.colwise().maxCoeff() - scene.cloud->points.colwise().minCoeff();
-    const double area = 2 * (e.x() * e.z() + e.y() * e.z()) + 1e-9;
-    radius = std::max(1.0, 0.9 * std::sqrt(area / scene.cloud->size()) * scale);
+    // Spacing of the points on a box around the bulk of the cloud (5th-95th
+    // percentile per axis, so that outliers do not inflate it).
+    Eigen::Vector3d e;
+    for (int axis = 0; axis < 3; ++axis) {
+      std::vector<double> v(scene.cloud->points.col(axis).data(),
+                            scene.cloud->points.col(axis).data() + scene.cloud->size());
+      const size_t lo = v.size() / 20, hi = v.size() - 1 - v.size() / 20;
+      std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(lo), v.end());
+      const double a = v[lo];
+      std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(hi), v.end());
+      e[axis] = std::max(v[hi] - a, 1e-9);
+    }
+    const double area = 2 * (e.x() * e.z() + e.y() * e.z() + e.x() * e.y());
+    radius = std::max(1.0, 0.7 * std::sqrt(area / scene.cloud->size()) * scale);
   }
   int left = 0;
   for (const Canvas& c : canvases) {
@@ -278,7 +295,9 @@ void WritePng(const RgbImage& image, const std::filesystem::path& file) {
   cv::Mat bgr;
   cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
   std::vector<uchar> buffer;
-  if (!cv::imencode(".png", bgr, buffer)) throw InternalError("PNG encoding failed for " + file.string());
+  if (!cv::imencode(".png", bgr, buffer, {cv::IMWRITE_PNG_COMPRESSION, 9})) {
+    throw InternalError("PNG encoding failed for " + file.string());
+  }
   WriteFileAtomically(file, std::string(buffer.begin(), buffer.end()));
 }
 

@@ -66,6 +66,10 @@ struct RenderOptions {
   bool label_points = true;
   int label_font_px = 13;           // label text height
   std::string title;                // drawn at the top left; empty = none
+  // The region to show (body frame, mm); empty (default) = fit the scene.
+  // Give the same bounds to several pictures to draw them at one scale
+  // (geometry outside is clipped).
+  Eigen::AlignedBox3d bounds;
   // Throws InputError for values out of range.
   void Check() const;
 };
