@@ -40,12 +40,24 @@ CloudGeodesics::CloudGeodesics(const CloudGeodesicsOptions& options,
 CloudGeodesics::~CloudGeodesics() = default;
 
 std::pair<Eigen::Vector3d, int> CloudGeodesics::Snap(const Eigen::Vector3d& x,
-                                                     const std::string& what) const {
+                                                     const std::string& what,
+                                                     int component) const {
   if (!x.allFinite()) throw InputError(what + ": coordinates must be finite numbers");
-  double distance = 0;
-  const int node = grid_.LocateNode(x, &distance);
   const double limit = options_.max_snap_distance_mm > 0 ? options_.max_snap_distance_mm
                                                          : std::max(10.0, 3 * grid_.cell_size_mm());
+  double distance = 0;
+  int node = grid_.LocateNode(x, &distance, component);
+  if (component < 0) {
+    const auto& sizes = grid_.component_points();
+    if (sizes[static_cast<size_t>(grid_.component(node))] < 0.05 * sizes[0]) {
+      double main_distance = 0;
+      const int main = grid_.LocateNode(x, &main_distance, 0);
+      if (grid_.component(main) == 0 && main_distance <= limit) {
+        node = main;
+        distance = main_distance;
+      }
+    }
+  }
   if (distance > limit) {
     char text[160];
     std::snprintf(text, sizeof text,
@@ -84,7 +96,16 @@ CloudDistanceField CloudGeodesics::DistancesFrom(const Eigen::Vector3d& source,
 
 CloudGeodesicPath CloudGeodesics::Between(const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
   const auto [a, node_a] = Snap(from, "from");
-  const auto [b, node_b] = Snap(to, "to");
+  const auto [b, node_b] = Snap(to, "to", grid_.component(node_a));
+  if (grid_.component(node_a) != grid_.component(node_b)) {
+    const auto& sizes = grid_.component_points();
+    throw InputError(
+        "from " + Format(from) + " to " + Format(to) +
+        ": the points lie on separate pieces of the scan (" +
+        std::to_string(sizes[static_cast<size_t>(grid_.component(node_a))]) + " and " +
+        std::to_string(sizes[static_cast<size_t>(grid_.component(node_b))]) +
+        " points) that no surface path connects; is one of them in an unscanned region?");
+  }
   Propagation& propagation = PropagationFrom(a, node_a);
   propagation.Run(node_b);
   if (!propagation.settled(node_b))
@@ -117,7 +138,8 @@ CloudGeodesicPath CloudGeodesics::Between(const Eigen::Vector3d& from, const Eig
     // a gap) is undone and the propagated path, which follows links, is kept.
     bool on_surface = true;
     for (size_t i = 1; i < flowed_hints.size() && on_surface; ++i)
-      on_surface = grid_.Adjacent(flowed_hints[i - 1], flowed_hints[i]);
+      on_surface = grid_.StepOnSurface(flowed_hints[i - 1], flowed.row(i - 1).transpose(),
+                                       flowed_hints[i], flowed.row(i).transpose());
     result.polish_rejected = !on_surface;
     if (on_surface) {
       path = std::move(flowed);

@@ -75,8 +75,12 @@ class CloudGeodesics {
   CloudGeodesicPath Between(const Eigen::Vector3d& from, const Eigen::Vector3d& to);
 
   // `x` moved onto the surface and its node; InputError (naming `what`, e.g.
-  // "--from") when not finite or too far from the scan.
-  std::pair<Eigen::Vector3d, int> Snap(const Eigen::Vector3d& x, const std::string& what) const;
+  // "--from") when not finite or too far from the scan. The node is taken in
+  // connected component `component` when one is near enough; with -1, in the
+  // nearest point's component unless that is a small island (under 5 % of
+  // the largest component's points) and the largest is near enough.
+  std::pair<Eigen::Vector3d, int> Snap(const Eigen::Vector3d& x, const std::string& what,
+                                       int component = -1) const;
 
  private:
   Propagation& PropagationFrom(const Eigen::Vector3d& source, int node);

@@ -147,6 +147,7 @@ CloudGrid::CloudGrid(const CloudGridOptions& options, const Eigen::MatrixX3d& po
   FitNodes(options, points);
   ProgressUpdate(progress, 2);
   LinkNodes(options);
+  FindComponents();
   ProgressUpdate(progress, 3);
   ProgressEnd(progress);
 }
@@ -273,6 +274,7 @@ bool CloudGrid::Connected(int a, int b, double cos_max) {
 
 void CloudGrid::LinkNodes(const CloudGridOptions& options) {
   const double cos_max = std::cos(options.max_link_angle_deg * kPi / 180.0);
+  cos_max_angle_ = cos_max;
   const int nodes = num_nodes();
   std::vector<std::pair<int, int>> pairs;
   pairs.reserve(static_cast<size_t>(nodes) * 8);
@@ -305,22 +307,93 @@ void CloudGrid::LinkNodes(const CloudGridOptions& options) {
   }
 }
 
-int CloudGrid::LocateNode(const Eigen::Vector3d& x, double* distance_mm) const {
+int CloudGrid::LocateNode(const Eigen::Vector3d& x, double* distance_mm, int component) const {
   double d2 = 0;
   const int point = index_->Nearest(x, &d2);
+  int node = point_node_[static_cast<size_t>(point)];
+  if (component >= 0 && component_[static_cast<size_t>(node)] != component) {
+    std::vector<int> near;
+    std::vector<double> near_d2;
+    bool found = false;
+    for (const int k : {64, 1024}) {
+      index_->Knn(x, k, &near, &near_d2);
+      for (size_t i = 0; i < near.size() && !found; ++i) {
+        const int candidate = point_node_[static_cast<size_t>(near[i])];
+        if (component_[static_cast<size_t>(candidate)] == component) {
+          node = candidate;
+          d2 = near_d2[i];
+          found = true;
+        }
+      }
+      if (found) break;
+    }
+  }
   if (distance_mm) *distance_mm = std::sqrt(d2);
-  return point_node_[static_cast<size_t>(point)];
+  return node;
 }
 
-bool CloudGrid::Adjacent(int a, int b) const {
+bool CloudGrid::WithinHops(int a, int b, int hops) const {
   if (a == b) return true;
-  if (a < 0 || b < 0) return false;
+  if (a < 0 || b < 0 || hops <= 0) return false;
   for (const int* l = links_begin(a); l != links_end(a); ++l)
     if (*l == b) return true;
-  for (const int* l = links_begin(a); l != links_end(a); ++l)
-    for (const int* k = links_begin(b); k != links_end(b); ++k)
-      if (*l == *k) return true;
+  if (hops == 1) return false;
+  // Small breadth-first search; the frontier stays a few hundred nodes.
+  std::vector<int> frontier = {a}, seen = {a};
+  for (int depth = 1; depth <= hops && !frontier.empty(); ++depth) {
+    std::vector<int> next;
+    for (const int n : frontier)
+      for (const int* l = links_begin(n); l != links_end(n); ++l) {
+        if (*l == b) return true;
+        if (std::find(seen.begin(), seen.end(), *l) != seen.end()) continue;
+        seen.push_back(*l);
+        next.push_back(*l);
+      }
+    frontier.swap(next);
+  }
   return false;
+}
+
+bool CloudGrid::StepOnSurface(int a, const Eigen::Vector3d& pa, int b,
+                              const Eigen::Vector3d& pb) const {
+  if (WithinHops(a, b, 2)) return true;
+  if (a < 0 || b < 0) return false;
+  const LocalSurface& sa = surfaces_[static_cast<size_t>(a)];
+  const LocalSurface& sb = surfaces_[static_cast<size_t>(b)];
+  if (std::abs(sa.PlaneAt(pa).normal.dot(sb.PlaneAt(pb).normal)) < cos_max_angle_) return false;
+  return std::min(std::abs(sa.Offset(pb)), std::abs(sb.Offset(pa))) <= 0.5 * gap_;
+}
+
+void CloudGrid::FindComponents() {
+  const int n = num_nodes();
+  component_.assign(static_cast<size_t>(n), -1);
+  std::vector<Eigen::Index> points;
+  std::vector<int> stack;
+  for (int start = 0; start < n; ++start) {
+    if (component_[start] >= 0) continue;
+    const int id = static_cast<int>(points.size());
+    points.push_back(0);
+    component_[start] = id;
+    stack.assign(1, start);
+    while (!stack.empty()) {
+      const int node = stack.back();
+      stack.pop_back();
+      points[id] += node_point_offsets_[node + 1] - node_point_offsets_[node];
+      for (const int* l = links_begin(node); l != links_end(node); ++l)
+        if (component_[*l] < 0) component_[*l] = id, stack.push_back(*l);
+    }
+  }
+  // Renumber by size, largest first.
+  std::vector<int> order(points.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return points[x] > points[y]; });
+  std::vector<int> rank(points.size());
+  component_points_.resize(points.size());
+  for (size_t r = 0; r < order.size(); ++r) {
+    rank[order[r]] = static_cast<int>(r);
+    component_points_[r] = points[order[r]];
+  }
+  for (int& c : component_) c = rank[c];
 }
 
 int CloudGrid::WalkToNearest(const Eigen::Vector3d& x, int start) const {

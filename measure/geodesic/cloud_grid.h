@@ -95,11 +95,25 @@ class CloudGrid : public TangentPlaneSource {
   std::int64_t memory_bytes() const;
 
   // The node of the scan point nearest `x`; the distance to that point in
-  // `*distance_mm` when not null.
-  int LocateNode(const Eigen::Vector3d& x, double* distance_mm = nullptr) const;
-  // True when `a` and `b` are the same node, linked, or both linked to a
-  // third node: consecutive samples of a path on the surface are.
-  bool Adjacent(int a, int b) const;
+  // `*distance_mm` when not null. With `component` >= 0, the nearest of the
+  // 1024 nearest points lying in that component, if any (unscanned regions such
+  // as the crotch leave small islands of points that a query should skip).
+  int LocateNode(const Eigen::Vector3d& x, double* distance_mm = nullptr,
+                 int component = -1) const;
+  // True when `a` and `b` are at most `hops` links apart (0: the same node).
+  // Consecutive samples of a path on the surface are within a few hops; a
+  // path cut across a gap joins nodes that are far apart in the graph.
+  bool WithinHops(int a, int b, int hops = 4) const;
+  // Whether a path may step from `pa` (a sample near node `a`) to `pb` (near
+  // `b`): the nodes are within two links, or the step stays on one smooth
+  // surface - each point within sheet_gap_mm / 2 of the other's local surface
+  // and their normals within max_link_angle_deg - as when crossing a hole in
+  // the scan. A step across an air gap between sheets is neither.
+  bool StepOnSurface(int a, const Eigen::Vector3d& pa, int b, const Eigen::Vector3d& pb) const;
+  // Connected component of each node (0 = the one with the most scan points,
+  // 1 the next, ...), and the number of scan points per component.
+  int component(int node) const { return component_[static_cast<size_t>(node)]; }
+  const std::vector<Eigen::Index>& component_points() const { return component_points_; }
   // From `start`, follows links to the node whose site is nearest `x`.
   int WalkToNearest(const Eigen::Vector3d& x, int start) const;
 
@@ -110,12 +124,14 @@ class CloudGrid : public TangentPlaneSource {
   void BuildCells(const Eigen::MatrixX3d& points);
   void FitNodes(const CloudGridOptions& options, const Eigen::MatrixX3d& points);
   void LinkNodes(const CloudGridOptions& options);
+  void FindComponents();
   bool Connected(int a, int b, double cos_max);
   std::int64_t KeyOf(const Eigen::Vector3d& x) const;
 
   std::unique_ptr<PointIndex> index_;
   double spacing_ = 0, cell_ = 0, gap_ = 0, blend_ = 0;
   int neighbours_ = 0;
+  double cos_max_angle_ = 0;
   Eigen::Vector3d min_ = Eigen::Vector3d::Zero();
   std::int64_t dims_[3] = {0, 0, 0};
   // cell key -> (first node, node count); nodes of a cell are contiguous.
@@ -129,6 +145,8 @@ class CloudGrid : public TangentPlaneSource {
   std::vector<double> local_spacing_;         // per node, mm
   std::vector<int> link_offsets_, link_targets_;  // CSR adjacency
   LinkStats link_stats_;
+  std::vector<int> component_;                // per node
+  std::vector<Eigen::Index> component_points_;  // per component, descending
 };
 
 }  // namespace bespoke

@@ -166,7 +166,8 @@ void Propagation::Settle(int node, int parent) {
     if (!report.converged) ++stats_.unconverged;
     bool on_surface = true;
     for (size_t i = 1; i < hints.size() && on_surface; ++i)
-      on_surface = grid_.Adjacent(hints[i - 1], hints[i]);
+      on_surface = grid_.StepOnSurface(hints[i - 1], window.row(i - 1).transpose(), hints[i],
+                                       window.row(i).transpose());
     if (!on_surface) {
       ++stats_.rejected;
       window = inherited;

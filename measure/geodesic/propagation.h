@@ -14,10 +14,12 @@
 // the parent's path plus its own site (no backtracing) and the curvature flow
 // (curvature_flow.h) straightens the last `window` samples, the first of them
 // held fixed (Algorithm 3/5), or the whole path (`whole_path`, Algorithm 2).
-// A flow may not cut across a gap: if two consecutive samples end up on grid
-// nodes that are not adjacent (CloudGrid::Adjacent) - e.g. straightening
-// around a lip would pass through it - the flow is undone and the node keeps
-// the inherited polyline, which follows links (counted in stats().rejected).
+// A flow may not cut across a gap: if a step between consecutive samples
+// leaves the surface (CloudGrid::StepOnSurface: nodes far apart in the graph
+// and not on one smooth surface - e.g. straightening round a lip would pass
+// through it) the flow is undone and the node keeps the inherited polyline,
+// which follows links (counted in stats().rejected). Crossing a hole in the
+// scan on one smooth surface is allowed.
 //
 // Memory: paths share prefixes. Each node stores only its window (<= w
 // samples) and where it starts in its parent's path, so memory is O(n * w),
