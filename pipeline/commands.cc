@@ -11,6 +11,8 @@ CommandRunner SetupCleanCommand(CLI::App& app);
 CommandRunner SetupRunCommand(CLI::App& app);
 CommandRunner SetupBatchCommand(CLI::App& app);
 CommandRunner SetupBatchMergeCommand(CLI::App& app);
+CommandRunner SetupGeodesicCommand(CLI::App& app);
+CommandRunner SetupValidateCommand(CLI::App& app);
 CommandRunner SetupResizeCommand(CLI::App& app);
 CommandRunner SetupDraftCommand(CLI::App& app);
 CommandRunner SetupScanSimCommand(CLI::App& app);
@@ -29,6 +31,10 @@ const std::vector<Command>& AllCommands() {
        &SetupBatchCommand},
       {"batch-merge", "Merge the shards of a batch (e.g. a Slurm job array) into one report",
        &SetupBatchMergeCommand},
+      {"geodesic", "Geodesic length between two points, or distance field, on a scan's points",
+       &SetupGeodesicCommand},
+      {"validate", "Compare a scan's cloud geodesics with exact ones on a reconstructed mesh",
+       &SetupValidateCommand},
       {"resize", "Fit a sewing pattern to a body's measurements (multi-objective GA, thesis ch. 4)",
        &SetupResizeCommand},
       {"draft", "Draft a built-in design (shirt, trousers) directly for a body's measurements",
