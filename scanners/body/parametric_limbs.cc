@@ -138,39 +138,48 @@ std::vector<int> ArmscyeLoop(const Build& b) {
   return loop;
 }
 
-}  // namespace
-
-void BuildArms(Build* b) {
-  const BodyLayout& L = *b->layout;
-  const ParametricBodyOptions& o = L.options;
-  const int M = o.arm_segments, q = M / 4;
-  const double spacing = o.ring_spacing_mm, H = o.stature_mm;
-  const std::vector<int> loop = ArmscyeLoop(*b);
-  BESPOKE_CHECK(static_cast<int>(loop.size()) == M, "parametric body: armscye loop size");
+// Everything the right arm's rings are built from.
+struct ArmPlan {
   ArmPath path;
+  std::vector<Eigen::Vector3d> local;   // armscye loop: (t along +x, u along +z, v along +y) about path.start
+  std::vector<SectionKey> keys;         // arm keys, `at` on the centre path
+  double blend = 0;                     // the loop has blended into the sections by here
+  std::vector<double> stations;         // ring positions on the centre path
+  std::vector<double> cap_scale;        // per station: 1, or the fingertip cap's shrink
+  double s_fingers = 0, s_tip = 0;      // last key, fingertip
+  Eigen::Vector3d d;                    // the arm's straight direction
+  std::vector<std::pair<double, Eigen::Vector3d>> normals;  // ring plane normals by station
+};
+
+// The bend, the loop in its local frame, and the keys on the centre path.
+ArmPlan PlanArm(const Build& b, const std::vector<int>& loop) {
+  const BodyLayout& L = *b.layout;
+  const double H = L.options.stature_mm;
+  ArmPlan plan;
+  ArmPath& path = plan.path;
   path.start.setZero();
-  for (int v : loop) path.start += b->mesh.position(v);
-  path.start /= M;
-  std::vector<Eigen::Vector3d> local;  // (t along +x, u along +z, v along +y) about the start
+  for (int v : loop) path.start += b.mesh.position(v) / static_cast<double>(loop.size());
   double lowest = 0;
   for (int v : loop) {
-    const Eigen::Vector3d d = b->mesh.position(v) - path.start;
-    local.push_back({d.x(), d.z(), d.y()});
+    const Eigen::Vector3d d = b.mesh.position(v) - path.start;
+    plan.local.push_back({d.x(), d.z(), d.y()});
     lowest = std::min(lowest, d.z());
   }
-  path.radius = -lowest + 0.004 * H;
-  path.theta = (90 - o.arm_abduction_deg) * kPi / 180;
+  path.radius = -lowest + 0.004 * H;  // the pivot sits just below the armpit
+  path.theta = (90 - L.options.arm_abduction_deg) * kPi / 180;
+  plan.d = path.T(path.bend() + 1);
   // Arm keys from lateral-line distances to centre-path positions.
-  const double u_avg = 0.5 * (local[0].y() + L.arm.front().section.a);
+  const double u_avg = 0.5 * (plan.local[0].y() + L.arm.front().section.a);
   const double lateral_bend = path.bend() + u_avg * path.theta;
-  const auto to_path = [&](double lateral) {
-    return lateral <= lateral_bend ? lateral / (1 + u_avg / path.radius) : lateral - u_avg * path.theta;
-  };
-  const double blend = std::max(path.bend() + 0.006 * H, 0.045 * H);
-  std::vector<SectionKey> keys = L.arm;
-  for (SectionKey& key : keys) key.at = to_path(key.at);
-  BESPOKE_CHECK(keys[1].girth == "upper_arm_girth", "parametric body: arm keys changed");
-  keys[1].at = std::max(keys[1].at, blend + 0.02 * H);  // the girth ring must be past the blend
+  plan.blend = std::max(path.bend() + 0.006 * H, 0.045 * H);
+  plan.keys = L.arm;
+  for (SectionKey& key : plan.keys) {
+    key.at = key.at <= lateral_bend ? key.at / (1 + u_avg / path.radius) : key.at - u_avg * path.theta;
+  }
+  auto& keys = plan.keys;
+  BESPOKE_CHECK(keys[1].girth == "upper_arm_girth" && keys[2].girth == "elbow_girth" && keys[4].girth == "wrist_girth",
+                "parametric body: arm keys changed");
+  keys[1].at = std::max(keys[1].at, plan.blend + 0.02 * H);  // the girth ring must be past the blend
   keys[0].at = std::min(keys[0].at, 0.6 * keys[1].at);
   // The forearm's back (the ulna's ridge) runs straight from the elbow point
   // to the wrist point: shift the wrist and hand back by the depth change.
@@ -178,41 +187,52 @@ void BuildArms(Build* b) {
   keys[3].section.cv += 0.5 * shift;
   for (size_t k = 4; k < keys.size(); ++k) keys[k].section.cv += shift;
   for (size_t k = 1; k < keys.size(); ++k) BESPOKE_CHECK(keys[k].at > keys[k - 1].at, "parametric body: arm keys out of order");
-  // Stations: the bend by the outer line's spacing, then every key, then the fingertip cap.
-  std::vector<double> stations;
+  plan.s_fingers = keys.back().at;
+  plan.s_tip = plan.s_fingers + (L.arm_tip_lateral - L.arm.back().at);
+  return plan;
+}
+
+// Stations: the bend by the outer line's spacing, then every key, then the fingertip cap.
+void PlanStations(ArmPlan* plan, double spacing) {
+  const ArmPath& path = plan->path;
   if (path.theta > 0) {
-    const int steps = std::max(2, static_cast<int>(std::ceil(path.theta * (path.radius + local[0].y()) / spacing)));
-    for (int s = 1; s <= steps; ++s) stations.push_back(path.bend() * s / steps);
+    const int steps = std::max(2, static_cast<int>(std::ceil(path.theta * (path.radius + plan->local[0].y()) / spacing)));
+    for (int s = 1; s <= steps; ++s) plan->stations.push_back(path.bend() * s / steps);
   }
-  std::vector<double> stops = {blend};
-  for (const SectionKey& key : keys) stops.push_back(key.at);
+  std::vector<double> stops = {plan->blend};
+  for (const SectionKey& key : plan->keys) stops.push_back(key.at);
   std::sort(stops.begin(), stops.end());
-  double from = stations.empty() ? 0.0 : stations.back();
+  double from = plan->stations.empty() ? 0.0 : plan->stations.back();
   for (double stop : stops) {
     if (stop <= from + 1e-9) continue;
-    for (double s : Subdivide(from, stop, spacing)) stations.push_back(s);
+    for (double s : Subdivide(from, stop, spacing)) plan->stations.push_back(s);
     from = stop;
   }
-  const Section fingers = keys.back().section;
-  const double s_fingers = keys.back().at;
-  const double s_tip = s_fingers + (L.arm_tip_lateral - L.arm.back().at);
-  const int cap = std::max(3, static_cast<int>(std::ceil(kPi / 2 * std::max({fingers.a, fingers.front.b, s_tip - s_fingers}) / spacing)));
-  std::vector<double> cap_scale(stations.size(), 1.0);
+  const Section& fingers = plan->keys.back().section;
+  const double reach = std::max({fingers.a, fingers.front.b, plan->s_tip - plan->s_fingers});
+  const int cap = std::max(3, static_cast<int>(std::ceil(kPi / 2 * reach / spacing)));
+  plan->cap_scale.assign(plan->stations.size(), 1.0);
   for (int k = 1; k < cap; ++k) {
     const double psi = kPi / 2 * k / cap;
-    stations.push_back(s_fingers + (s_tip - s_fingers) * std::sin(psi));
-    cap_scale.push_back(std::cos(psi));
+    plan->stations.push_back(plan->s_fingers + (plan->s_tip - plan->s_fingers) * std::sin(psi));
+    plan->cap_scale.push_back(std::cos(psi));
   }
-  // Girth rings lie in the catalogue's planes: upper arm perpendicular to
-  // shoulder -> elbow, elbow perpendicular to shoulder -> wrist, wrist
-  // perpendicular to elbow -> wrist. Those depend on the datum points on the
-  // rings themselves; a few fixed-point steps settle them (small angles).
-  const Eigen::Vector3d d = path.T(path.bend() + 1), A = b->mesh.position(loop[0]);
+}
+
+// Girth rings lie in the catalogue's planes: upper arm perpendicular to
+// shoulder -> elbow, elbow perpendicular to shoulder -> wrist, wrist
+// perpendicular to elbow -> wrist. Those depend on the datum points on the
+// rings themselves (A: the acromion); a few fixed-point steps settle them
+// (the angles are small). Other rings' normals are interpolated.
+void PlanGirthPlanes(ArmPlan* plan, const Eigen::Vector3d& A) {
+  const ArmPath& path = plan->path;
+  const Eigen::Vector3d d = plan->d;
   const auto back_point = [&](const SectionKey& key, const Eigen::Vector3d& normal) {
     const Eigen::Quaterniond r = Eigen::Quaterniond::FromTwoVectors(d, normal);
     return Eigen::Vector3d(path.Centre(key.at) + key.section.cu * (r * path.U(key.at)) +
                            (key.section.cv - key.section.back.b) * (r * Eigen::Vector3d::UnitY()));
   };
+  const auto& keys = plan->keys;
   Eigen::Vector3d n_wrist = d, n_elbow = d;
   for (int iteration = 0; iteration < 50; ++iteration) {
     const Eigen::Vector3d W = back_point(keys[4], n_wrist);
@@ -220,58 +240,77 @@ void BuildArms(Build* b) {
     n_wrist = (W - back_point(keys[2], n_elbow)).normalized();
   }
   const Eigen::Vector3d n_upper = (back_point(keys[2], n_elbow) - A).normalized();
-  const std::vector<std::pair<double, Eigen::Vector3d>> normals = {
-      {blend, d}, {keys[1].at, n_upper}, {keys[2].at, n_elbow},
-      {keys[3].at, (n_elbow + n_wrist).normalized()}, {keys[4].at, n_wrist}, {keys[5].at, d}};
-  const auto normal_at = [&](double s) -> Eigen::Vector3d {
-    if (s <= normals.front().first || s >= normals.back().first) return d;
-    size_t i = 0;
-    while (normals[i + 1].first < s) ++i;
-    const double t = (s - normals[i].first) / (normals[i + 1].first - normals[i].first);
-    return ((1 - t) * normals[i].second + t * normals[i + 1].second).normalized();
-  };
-  std::vector<std::vector<Eigen::Vector3d>> rings;
-  for (size_t k = 0; k < stations.size(); ++k) {
-    const double s = stations[k];
-    const double x = std::min(1.0, s / blend), w = x * x * (3 - 2 * x);
-    Section section = InterpolateSection(keys, std::min(s, s_fingers));
-    if (cap_scale[k] < 1) section = section.Scaled(cap_scale[k]);
-    const std::vector<Eigen::Vector2d> pts = section.Sample(q);
-    const Eigen::Quaterniond r = Eigen::Quaterniond::FromTwoVectors(path.T(s), s < blend ? path.T(s) : normal_at(s));
-    const Eigen::Vector3d c = path.Centre(s), T = path.T(s);
-    const Eigen::Vector3d U = r * path.U(s), F = r * Eigen::Vector3d::UnitY();
-    std::vector<Eigen::Vector3d> ring;
-    for (int m = 0; m < M; ++m) {
-      const Eigen::Vector3d& l = local[static_cast<size_t>(m)];
-      const Eigen::Vector2d& p = pts[static_cast<size_t>(m)];
-      ring.push_back(c + (1 - w) * l.x() * T + ((1 - w) * l.y() + w * p.x()) * U + ((1 - w) * l.z() + w * p.y()) * F);
-    }
-    rings.push_back(ring);
+  plan->normals = {{plan->blend, d},        {keys[1].at, n_upper}, {keys[2].at, n_elbow},
+                   {keys[3].at, (n_elbow + n_wrist).normalized()}, {keys[4].at, n_wrist}, {keys[5].at, d}};
+}
+
+Eigen::Vector3d NormalAt(const ArmPlan& plan, double s) {
+  const auto& normals = plan.normals;
+  if (s <= normals.front().first || s >= normals.back().first) return plan.d;
+  size_t i = 0;
+  while (normals[i + 1].first < s) ++i;
+  const double t = (s - normals[i].first) / (normals[i + 1].first - normals[i].first);
+  return ((1 - t) * normals[i].second + t * normals[i + 1].second).normalized();
+}
+
+// The ring at station k: the armscye loop blended into the section, in the
+// plane through the centre path (turned to its girth plane past the blend).
+std::vector<Eigen::Vector3d> ArmRing(const ArmPlan& plan, size_t k, int segments) {
+  const ArmPath& path = plan.path;
+  const double s = plan.stations[k];
+  const double x = std::min(1.0, s / plan.blend), w = x * x * (3 - 2 * x);
+  Section section = InterpolateSection(plan.keys, std::min(s, plan.s_fingers));
+  if (plan.cap_scale[k] < 1) section = section.Scaled(plan.cap_scale[k]);
+  const std::vector<Eigen::Vector2d> pts = section.Sample(segments / 4);
+  const Eigen::Quaterniond r = Eigen::Quaterniond::FromTwoVectors(path.T(s), s < plan.blend ? path.T(s) : NormalAt(plan, s));
+  const Eigen::Vector3d c = path.Centre(s), T = path.T(s);
+  const Eigen::Vector3d U = r * path.U(s), F = r * Eigen::Vector3d::UnitY();
+  std::vector<Eigen::Vector3d> ring;
+  for (int m = 0; m < segments; ++m) {
+    const Eigen::Vector3d& l = plan.local[static_cast<size_t>(m)];
+    const Eigen::Vector2d& p = pts[static_cast<size_t>(m)];
+    ring.push_back(c + (1 - w) * l.x() * T + ((1 - w) * l.y() + w * p.x()) * U + ((1 - w) * l.z() + w * p.y()) * F);
   }
+  return ring;
+}
+
+}  // namespace
+
+void BuildArms(Build* b) {
+  const ParametricBodyOptions& o = b->layout->options;
+  const int M = o.arm_segments, q = M / 4;
+  const std::vector<int> loop = ArmscyeLoop(*b);
+  BESPOKE_CHECK(static_cast<int>(loop.size()) == M, "parametric body: armscye loop size");
+  ArmPlan plan = PlanArm(*b, loop);
+  PlanStations(&plan, o.ring_spacing_mm);
+  PlanGirthPlanes(&plan, b->mesh.position(loop[0]));
+  std::vector<std::vector<Eigen::Vector3d>> rings;
+  for (size_t k = 0; k < plan.stations.size(); ++k) rings.push_back(ArmRing(plan, k, M));
   b->part_starts.push_back({b->mesh.num_vertices(), BodyPart::kArmRight});
-  const auto right = AddTube(b, loop, rings, path.Centre(s_tip));
+  const auto right = AddTube(b, loop, rings, plan.path.Centre(plan.s_tip));
   b->part_starts.push_back({b->mesh.num_vertices(), BodyPart::kArmLeft});
   AddMirroredTube(b, loop, right);
-  const auto ring_at = [&](double s) { return right[IndexOf(stations, s)]; };
-  for (const SectionKey& key : keys) {
+  const auto ring_at = [&](double s) { return right[IndexOf(plan.stations, s)]; };
+  for (const SectionKey& key : plan.keys) {
     if (key.girth.empty()) continue;
-    const Eigen::Quaterniond r = Eigen::Quaterniond::FromTwoVectors(path.T(key.at), normal_at(key.at));
-    AddLimbGirth(b, key.girth, ring_at(key.at), key.section, path.Centre(key.at), normal_at(key.at),
-                 path.Centre(key.at), r * path.U(key.at), r * Eigen::Vector3d::UnitY());
+    const Eigen::Vector3d n = NormalAt(plan, key.at);
+    const Eigen::Quaterniond r = Eigen::Quaterniond::FromTwoVectors(plan.path.T(key.at), n);
+    AddLimbGirth(b, key.girth, ring_at(key.at), key.section, plan.path.Centre(key.at), n,
+                 plan.path.Centre(key.at), r * plan.path.U(key.at), r * Eigen::Vector3d::UnitY());
   }
-  b->landmarks["upper_arm_right"] = ring_at(keys[1].at)[0];
-  b->landmarks["elbow_right"] = ring_at(keys[2].at)[static_cast<size_t>(3 * q)];
-  b->landmarks["wrist_right"] = ring_at(keys[4].at)[static_cast<size_t>(3 * q)];
+  b->landmarks["upper_arm_right"] = ring_at(plan.keys[1].at)[0];
+  b->landmarks["elbow_right"] = ring_at(plan.keys[2].at)[static_cast<size_t>(3 * q)];
+  b->landmarks["wrist_right"] = ring_at(plan.keys[4].at)[static_cast<size_t>(3 * q)];
   // The lateral line actually built, acromion to wrist (for the report).
   double lateral = 0;
   Eigen::Vector3d previous = b->mesh.position(loop[0]);
-  for (size_t k = 0; k <= IndexOf(stations, keys[4].at); ++k) {
+  for (size_t k = 0; k <= IndexOf(plan.stations, plan.keys[4].at); ++k) {
     const Eigen::Vector3d p = b->mesh.position(right[k][0]);
     lateral += (p - previous).norm();
     previous = p;
   }
   b->derived["arm_lateral_line_mm"] = lateral;
-  b->derived["arm_bend_radius_mm"] = path.radius;
+  b->derived["arm_bend_radius_mm"] = plan.path.radius;
   b->derived["armhole_columns"] = 2 * b->h;
 }
 
