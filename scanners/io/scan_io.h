@@ -109,12 +109,18 @@ struct WriteOptions {
   std::string comment;
 };
 
-// Writes a cloud; format from the extension (.ply, .pcd, .xyz). Normals,
-// colours and scalars are written where the format can hold them.
+// Writes a cloud; format from the extension (.ply, .pcd, .xyz/.txt, .csv).
+// Normals, colours and scalars are written where the format can hold them.
+// PLY keeps positions and scalars as doubles (exact round trip); PCD uses
+// 4-byte floats, PCL's own layout, so PCL tools read it (about 0.1 um at
+// 2 m); XYZ/CSV text is the shortest exact decimal, with a header line.
+// Throws InputError for an unknown extension or a missing folder.
 void WriteScan(const WriteOptions& options, const PointCloud& cloud,
                const std::filesystem::path& file);
 
-// Writes a mesh; format from the extension (.obj, .ply, .off, .stl).
+// Writes a mesh; format from the extension (.obj, .ply, .off, .stl). STL is
+// binary with float corners; the others keep doubles exactly. Throws
+// InputError for face indices out of range or an unknown extension.
 void WriteMesh(const WriteOptions& options, const TriangleMesh& mesh,
                const std::filesystem::path& file);
 
