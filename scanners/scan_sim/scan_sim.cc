@@ -93,6 +93,60 @@ void AddOutliers(const ScanSimOptions& o, const std::vector<DepthSensor>& sensor
   }
 }
 
+// One sensor's depth image: cast its rays (from its true, possibly
+// misaligned pose), drop grazing and out-of-range returns, add range noise,
+// report the points with the calibrated pose. `ids`: body and floor mesh ids.
+void ScanWithSensor(const ScanSimOptions& o, const MeshRaycaster& caster, std::pair<int, int> ids, int k,
+                    ScanSimResult* result, Collected* c) {
+  const DepthSensor& nominal = result->sensors[static_cast<size_t>(k)];
+  auto rng = Stream(o.seed, 1000 + static_cast<std::uint64_t>(k));
+  // The sensor's true pose: the calibrated one moved by a small rigid error.
+  Eigen::Affine3d truth = nominal.body_from_camera;
+  if (o.misalign_mm > 0 || o.misalign_deg > 0) {
+    std::normal_distribution<double> normal(0, 1);
+    Eigen::Affine3d error = Eigen::Affine3d::Identity();
+    error.linear() = RandomSmallRotation(rng, o.misalign_deg * kPi / 180);
+    error.translation() = o.misalign_mm * Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
+    truth = nominal.body_from_camera * error;
+  }
+  const Eigen::Affine3d reported_from_true = nominal.body_from_camera * truth.inverse();
+  const int n = nominal.width_px * nominal.height_px;
+  Eigen::MatrixX3d origins(n, 3), directions(n, 3);
+  DepthSensor true_sensor = nominal;
+  true_sensor.body_from_camera = truth;
+  for (int v = 0, i = 0; v < nominal.height_px; ++v) {
+    for (int u = 0; u < nominal.width_px; ++u, ++i) {
+      origins.row(i) = truth.translation();
+      directions.row(i) = true_sensor.Ray(u, v);
+    }
+  }
+  const RayHits hits = caster.Cast(origins, directions);
+  result->rays += n;
+  std::normal_distribution<double> noise(0, o.noise_sigma_mm > 0 ? o.noise_sigma_mm : 1.0);
+  for (int i = 0; i < n; ++i) {
+    if (hits.geometry[i] < 0) continue;
+    const Eigen::Vector3d d = directions.row(i);
+    const Eigen::Vector3d face_normal = hits.normal.row(i);
+    const double cosine = face_normal.dot(d);
+    const double range = hits.distance[i];
+    const double e = o.noise_sigma_mm > 0 ? noise(rng) : 0.0;  // drawn for every hit: stable streams
+    if (std::abs(cosine) < o.min_incidence_cos) {
+      ++result->dropped_grazing;
+      continue;
+    }
+    if (range < nominal.min_range_mm || range > nominal.max_range_mm) {
+      ++result->dropped_range;
+      continue;
+    }
+    const Eigen::Vector3d p = reported_from_true * (truth.translation() + (range + e) * d);
+    const Eigen::Vector3d normal = reported_from_true.linear() * (cosine > 0 ? -face_normal : face_normal);
+    const ScanSource source = hits.geometry[i] == ids.first    ? ScanSource::kBody
+                              : hits.geometry[i] == ids.second ? ScanSource::kFloor
+                                                               : ScanSource::kStray;
+    c->Add(p, normal, source, k);
+  }
+}
+
 }  // namespace
 
 ScanTransform ParseScanTransform(const std::string& text) {
@@ -137,53 +191,7 @@ ScanSimResult SimulateScan(const ScanSimOptions& o, const TriangleMesh& body, Pr
   Collected c;
   ProgressBegin(progress, "scanning", static_cast<std::int64_t>(result.sensors.size()));
   for (size_t k = 0; k < result.sensors.size(); ++k) {
-    const DepthSensor& nominal = result.sensors[k];
-    auto rng = Stream(o.seed, 1000 + k);
-    // The sensor's true pose: the calibrated one moved by a small rigid error.
-    Eigen::Affine3d truth = nominal.body_from_camera;
-    if (o.misalign_mm > 0 || o.misalign_deg > 0) {
-      std::normal_distribution<double> normal(0, 1);
-      Eigen::Affine3d error = Eigen::Affine3d::Identity();
-      error.linear() = RandomSmallRotation(rng, o.misalign_deg * kPi / 180);
-      error.translation() = o.misalign_mm * Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
-      truth = nominal.body_from_camera * error;
-    }
-    const Eigen::Affine3d reported_from_true = nominal.body_from_camera * truth.inverse();
-    const int n = nominal.width_px * nominal.height_px;
-    Eigen::MatrixX3d origins(n, 3), directions(n, 3);
-    DepthSensor true_sensor = nominal;
-    true_sensor.body_from_camera = truth;
-    for (int v = 0, i = 0; v < nominal.height_px; ++v) {
-      for (int u = 0; u < nominal.width_px; ++u, ++i) {
-        origins.row(i) = truth.translation();
-        directions.row(i) = true_sensor.Ray(u, v);
-      }
-    }
-    const RayHits hits = caster.Cast(origins, directions);
-    result.rays += n;
-    std::normal_distribution<double> noise(0, o.noise_sigma_mm > 0 ? o.noise_sigma_mm : 1.0);
-    for (int i = 0; i < n; ++i) {
-      if (hits.geometry[i] < 0) continue;
-      const Eigen::Vector3d d = directions.row(i);
-      const Eigen::Vector3d face_normal = hits.normal.row(i);
-      const double cosine = face_normal.dot(d);
-      const double range = hits.distance[i];
-      const double e = o.noise_sigma_mm > 0 ? noise(rng) : 0.0;  // drawn for every hit: stable streams
-      if (std::abs(cosine) < o.min_incidence_cos) {
-        ++result.dropped_grazing;
-        continue;
-      }
-      if (range < nominal.min_range_mm || range > nominal.max_range_mm) {
-        ++result.dropped_range;
-        continue;
-      }
-      const Eigen::Vector3d p = reported_from_true * (truth.translation() + (range + e) * d);
-      const Eigen::Vector3d normal = reported_from_true.linear() * (cosine > 0 ? -face_normal : face_normal);
-      const ScanSource source = hits.geometry[i] == body_id    ? ScanSource::kBody
-                                : hits.geometry[i] == floor_id ? ScanSource::kFloor
-                                                               : ScanSource::kStray;
-      c.Add(p, normal, source, static_cast<int>(k));
-    }
+    ScanWithSensor(o, caster, {body_id, floor_id}, static_cast<int>(k), &result, &c);
     ProgressUpdate(progress, static_cast<std::int64_t>(k + 1));
   }
   ProgressEnd(progress);
