@@ -98,6 +98,29 @@ void AddTorsoFaces(Build* b) {
   }
 }
 
+// An ellipsoidal cap over the last torso key (the head), closed at the crown.
+void AddDome(Build* b) {
+  const BodyLayout& L = *b->layout;
+  const int n = b->n;
+  const double spacing = L.options.ring_spacing_mm;
+  const double z0 = L.z_dome, z1 = L.options.stature_mm;
+  const double reach = std::max({L.dome.a, L.dome.front.b, L.dome.back.b, z1 - z0});
+  const int steps = std::max(4, static_cast<int>(std::ceil(kPi / 2 * reach / spacing)));
+  std::vector<int> previous = b->torso.back();
+  for (int s = 1; s < steps; ++s) {
+    const double phi = kPi / 2 * s / steps;
+    const std::vector<Eigen::Vector2d> pts = L.dome.Scaled(std::cos(phi)).Sample(n / 4);
+    std::vector<int> ring;
+    for (const Eigen::Vector2d& p : pts) ring.push_back(b->mesh.Add({p.x(), p.y(), z0 + (z1 - z0) * std::sin(phi)}));
+    for (int j = 0; j < n; ++j) b->SetMirror(ring[static_cast<size_t>(j)], ring[static_cast<size_t>(b->Col(n / 2 - j))]);
+    b->mesh.Stitch(previous, ring);
+    previous = ring;
+  }
+  b->crown = b->mesh.Add({0, L.dome.cv, z1});
+  b->SetMirror(b->crown, b->crown);
+  b->mesh.Fan(previous, b->crown);
+}
+
 }  // namespace
 
 double SidewaysChange(const Section& x, const Section& y) {
@@ -205,24 +228,7 @@ void BuildTorso(Build* b) {
     b->SetMirror(v, v);
   }
   AddTorsoFaces(b);
-  // Dome: an ellipsoidal cap over the last key, closed at the crown.
-  const double spacing = L.options.ring_spacing_mm;
-  const double z0 = L.z_dome, z1 = L.options.stature_mm;
-  const double reach = std::max({L.dome.a, L.dome.front.b, L.dome.back.b, z1 - z0});
-  const int steps = std::max(4, static_cast<int>(std::ceil(kPi / 2 * reach / spacing)));
-  std::vector<int> previous = b->torso.back();
-  for (int s = 1; s < steps; ++s) {
-    const double phi = kPi / 2 * s / steps;
-    const std::vector<Eigen::Vector2d> pts = L.dome.Scaled(std::cos(phi)).Sample(n / 4);
-    std::vector<int> ring;
-    for (const Eigen::Vector2d& p : pts) ring.push_back(b->mesh.Add({p.x(), p.y(), z0 + (z1 - z0) * std::sin(phi)}));
-    for (int j = 0; j < n; ++j) b->SetMirror(ring[static_cast<size_t>(j)], ring[static_cast<size_t>(b->Col(n / 2 - j))]);
-    b->mesh.Stitch(previous, ring);
-    previous = ring;
-  }
-  b->crown = b->mesh.Add({0, L.dome.cv, z1});
-  b->SetMirror(b->crown, b->crown);
-  b->mesh.Fan(previous, b->crown);
+  AddDome(b);
 }
 
 std::vector<std::vector<int>> AddTube(Build* b, const std::vector<int>& first,
