@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "scanners/core/errors.h"
 
@@ -80,6 +81,7 @@ CloudDistanceField CloudGeodesics::DistancesFrom(const Eigen::Vector3d& source,
   const auto [point, node] = Snap(source, "source");
   Propagation& propagation = PropagationFrom(point, node);
   propagation.Run(-1, progress);
+  field_source_ = point;
   CloudDistanceField field;
   field.source = point;
   field.stats = propagation.stats();
@@ -92,6 +94,19 @@ CloudDistanceField CloudGeodesics::DistancesFrom(const Eigen::Vector3d& source,
     field.point_distance_mm[i] =
         propagation.DistanceNear(grid_.node_of_point(i), points.row(i).transpose());
   return field;
+}
+
+Eigen::VectorXd CloudGeodesics::DistancesAt(const Eigen::MatrixX3d& points) {
+  if (!field_source_ || !cached_ || cached_->source() != *field_source_)
+    throw InputError("geodesics: DistancesAt needs a distance field (DistancesFrom) first");
+  cached_->Run(-1);
+  Eigen::VectorXd out(points.rows());
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    const Eigen::Vector3d x = points.row(i).transpose();
+    out[i] = x.allFinite() ? cached_->DistanceNear(grid_.LocateNode(x), x)
+                           : std::numeric_limits<double>::infinity();
+  }
+  return out;
 }
 
 CloudGeodesicPath CloudGeodesics::Between(const Eigen::Vector3d& from, const Eigen::Vector3d& to) {

@@ -22,6 +22,7 @@
 #define BESPOKE_MEASURE_GEODESIC_CLOUD_GEODESICS_H_
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "measure/geodesic/cloud_grid.h"
@@ -73,6 +74,11 @@ class CloudGeodesics {
 
   CloudDistanceField DistancesFrom(const Eigen::Vector3d& source, Progress* progress = nullptr);
   CloudGeodesicPath Between(const Eigen::Vector3d& from, const Eigen::Vector3d& to);
+  // Distances from the last DistancesFrom source to other points near the
+  // surface (#Q x 3, mm; e.g. a mesh's vertices): each point takes its nearest
+  // scan point's node, carried to first order as for the scan's own points.
+  // +inf where unreachable. InputError before any DistancesFrom call.
+  Eigen::VectorXd DistancesAt(const Eigen::MatrixX3d& points);
 
   // `x` moved onto the surface and its node; InputError (naming `what`, e.g.
   // "--from") when not finite or too far from the scan. The node is taken in
@@ -88,6 +94,7 @@ class CloudGeodesics {
   CloudGeodesicsOptions options_;
   CloudGrid grid_;
   std::unique_ptr<Propagation> cached_;
+  std::optional<Eigen::Vector3d> field_source_;  // source of the last DistancesFrom
 };
 
 }  // namespace bespoke

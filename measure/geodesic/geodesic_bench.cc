@@ -1,0 +1,378 @@
+// geodesic_bench: speed, memory and accuracy of the point-cloud geodesics
+// (thesis Algorithms 4-5) against CGAL's exact geodesics, in one run.
+//
+//   build/measure/geodesic_bench [--shared DIR] [--no-cgal] [--quick]
+//
+// Rows (each algorithm runs in a forked child so its peak memory is its own):
+//   - single source to all destinations on clouds made of the vertices of the
+//     meshes in ../shared/data/meshes (116k-vertex MakeHuman body, the 35k and
+//     109k bunnies; MakeHuman is in dm, the bunny in m: both converted to mm),
+//     source vertex 0, errors per vertex against CGAL from the same vertex;
+//   - the same on a generated scan (parametric body through the virtual
+//     scanner, 0.5 mm noise), source the back neck point, errors at the body
+//     mesh's vertices that the scan saw (within 3 mm of a scan point);
+//   - point to point between ten pairs of datum points on that scan;
+//   - the 116k body at four cell sizes, to show how the cost grows.
+// Relative errors are over vertices at least 10 mm from the source. CGAL
+// needs several GB (about 5.6 GB on the 116k body): run the bench alone.
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "measure/geodesic/cloud_geodesics.h"
+#include "scanners/body/parametric_body.h"
+#include "scanners/catalogue/catalogue.h"
+#include "scanners/core/errors.h"
+#include "scanners/io/scan_io.h"
+#include "scanners/scan_sim/scan_sim.h"
+#include "scanners/truth/exact_geodesics.h"
+
+namespace bespoke {
+namespace {
+
+double Now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+// CPU seconds (user + system) of the last child run: the load of other jobs
+// on the machine inflates wall times, much less CPU times.
+double g_child_cpu_s = 0;
+
+// Runs `work` in a child process; returns its numbers, and its peak resident
+// memory in MB through `peak_mb` (its CPU time in g_child_cpu_s).
+std::vector<double> InChild(const std::function<std::vector<double>()>& work, double* peak_mb) {
+  int fds[2];
+  if (pipe(fds) != 0) throw InternalError("pipe failed");
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(fds[0]);
+    std::vector<double> out;
+    try {
+      out = work();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "child failed: %s\n", e.what());
+      _exit(1);
+    }
+    const std::size_t n = out.size();
+    if (write(fds[1], &n, sizeof n) != sizeof n) _exit(2);
+    const char* p = reinterpret_cast<const char*>(out.data());
+    for (std::size_t left = n * sizeof(double); left > 0;) {
+      const ssize_t w = write(fds[1], p, left);
+      if (w <= 0) _exit(2);
+      p += w;
+      left -= static_cast<std::size_t>(w);
+    }
+    _exit(0);
+  }
+  close(fds[1]);
+  std::size_t n = 0;
+  std::vector<double> out;
+  if (read(fds[0], &n, sizeof n) == sizeof n) {
+    out.resize(n);
+    char* p = reinterpret_cast<char*>(out.data());
+    for (std::size_t left = n * sizeof(double); left > 0;) {
+      const ssize_t r = read(fds[0], p, left);
+      if (r <= 0) break;
+      p += r;
+      left -= static_cast<std::size_t>(r);
+    }
+  }
+  close(fds[0]);
+  int status = 0;
+  struct rusage usage {};
+  wait4(pid, &status, 0, &usage);
+  *peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;
+  g_child_cpu_s = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                  1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) throw InternalError("child run failed");
+  return out;
+}
+
+struct Errors {
+  double mean_rel = 0, max_rel = 0, p999_rel = 0, mean_abs_mm = 0, max_abs_mm = 0;
+  int counted = 0, missing = 0;
+};
+
+Errors Compare(const Eigen::VectorXd& cloud, const Eigen::VectorXd& exact,
+               const std::vector<bool>* use = nullptr) {
+  Errors e;
+  std::vector<double> rel;
+  double sum_abs = 0;
+  int abs_count = 0;
+  for (Eigen::Index i = 0; i < exact.size(); ++i) {
+    if (!std::isfinite(exact[i]) || (use && !(*use)[static_cast<size_t>(i)])) continue;
+    if (!std::isfinite(cloud[i])) {
+      ++e.missing;
+      continue;
+    }
+    const double d = std::abs(cloud[i] - exact[i]);
+    sum_abs += d;
+    ++abs_count;
+    e.max_abs_mm = std::max(e.max_abs_mm, d);
+    if (exact[i] >= 10) rel.push_back(d / exact[i]);
+  }
+  e.counted = static_cast<int>(rel.size());
+  if (rel.empty()) return e;
+  double sum = 0;
+  for (const double r : rel) sum += r;
+  e.mean_rel = sum / static_cast<double>(rel.size());
+  std::sort(rel.begin(), rel.end());
+  e.max_rel = rel.back();
+  e.p999_rel = rel[static_cast<size_t>(0.999 * static_cast<double>(rel.size() - 1))];
+  e.mean_abs_mm = sum_abs / std::max(1, abs_count);
+  return e;
+}
+
+void PrintHeader() {
+  std::printf("\n%-26s %7s %6s %7s %7s %7s %7s %8s %8s %7s %7s %6s %7s %7s %7s\n", "run",
+              "points", "nodes", "grid_s", "prop_s", "cpu_s", "peak_MB", "cgal_s", "cgal_cpu",
+              "cgal_MB", "ratio", "mean_%", "p99.9_%", "max_%", "mean_mm");
+}
+
+// `cpu`, `cgal_cpu`: CPU seconds of the two child runs (cloud: grid, propagation
+// and evaluation at the reference vertices); the ratio is of CPU times.
+void PrintRow(const std::string& name, Eigen::Index points, double nodes, double grid_s,
+              double prop_s, double cpu, double peak, double cgal_s, double cgal_cpu,
+              double cgal_peak, const Errors& e) {
+  std::printf("%-26s %7lld %6.0f %7.3f %7.3f %7.2f %7.0f %8.2f %8.2f %7.0f %7.1f %6.3f %7.3f %7.3f "
+              "%7.3f\n",
+              name.c_str(), static_cast<long long>(points), nodes, grid_s, prop_s, cpu, peak, cgal_s,
+              cgal_cpu, cgal_peak, cgal_cpu > 0 ? cgal_cpu / cpu : 0.0, 100 * e.mean_rel,
+              100 * e.p999_rel, 100 * e.max_rel, e.mean_abs_mm);
+  std::fflush(stdout);
+}
+
+// Cloud single source in a child: {grid_s, prop_s, nodes, d_0 .. d_{Q-1}} at `query`.
+std::vector<double> CloudField(const CloudGeodesicsOptions& options, const Eigen::MatrixX3d& cloud,
+                               const Eigen::Vector3d& source, const Eigen::MatrixX3d& query) {
+  double t = Now();
+  CloudGeodesics geodesics(options, cloud);
+  const double grid_s = Now() - t;
+  t = Now();
+  geodesics.DistancesFrom(source);
+  const double prop_s = Now() - t;
+  const Eigen::VectorXd d = geodesics.DistancesAt(query);
+  std::vector<double> out = {grid_s, prop_s, static_cast<double>(geodesics.grid().num_nodes())};
+  out.insert(out.end(), d.data(), d.data() + d.size());
+  return out;
+}
+
+// CGAL single source in a child: {seconds, d_0 .. d_{V-1}}.
+std::vector<double> ExactField(const TriangleMesh& mesh, const SurfacePoint& source) {
+  const double t = Now();
+  ExactGeodesics exact(mesh);
+  const Eigen::VectorXd d = exact.DistancesToVertices(source);
+  std::vector<double> out = {Now() - t};
+  out.insert(out.end(), d.data(), d.data() + d.size());
+  return out;
+}
+
+Eigen::VectorXd Tail(const std::vector<double>& v, size_t skip) {
+  return Eigen::Map<const Eigen::VectorXd>(v.data() + skip, static_cast<Eigen::Index>(v.size() - skip));
+}
+
+// One mesh row; returns the exact distances (for the growth rows).
+Eigen::VectorXd MeshRow(const std::string& name, const TriangleMesh& mesh, bool cgal,
+                        const CloudGeodesicsOptions& options) {
+  double peak = 0, cgal_peak = 0;
+  const auto cloud = InChild([&] {
+    return CloudField(options, mesh.vertices, mesh.vertices.row(0).transpose(), mesh.vertices);
+  }, &peak);
+  const double cpu = g_child_cpu_s;
+  Eigen::VectorXd exact = Eigen::VectorXd::Constant(mesh.num_vertices(), NAN);
+  double cgal_s = 0, cgal_cpu = 0;
+  if (cgal) {
+    const auto e = InChild([&] {
+      SurfacePoint source;
+      for (Eigen::Index f = 0; f < mesh.num_faces() && source.face < 0; ++f)
+        for (int k = 0; k < 3; ++k)
+          if (mesh.faces(f, k) == 0) {
+            source.face = static_cast<int>(f);
+            source.barycentric = Eigen::Vector3d::Unit(k);
+          }
+      return ExactField(mesh, source);
+    }, &cgal_peak);
+    cgal_cpu = g_child_cpu_s;
+    cgal_s = e[0];
+    exact = Tail(e, 1);
+  }
+  PrintRow(name, mesh.num_vertices(), cloud[2], cloud[0], cloud[1], cpu, peak, cgal_s, cgal_cpu,
+           cgal_peak, Compare(Tail(cloud, 3), exact));
+  return exact;
+}
+
+TriangleMesh LoadMesh(const std::filesystem::path& file, LengthUnit unit) {
+  ReadOptions read;
+  read.units = unit;
+  read.min_finite_points = 0;
+  Mesh mesh = ReadMesh(read, file);
+  mesh.mesh.vertices *= MillimetresPer(unit);
+  return mesh.mesh;
+}
+
+void GeneratedScanRows(bool cgal, bool quick) {
+  ParametricBodyOptions shape;  // the average woman, girth rings coarser than default
+  shape.girth_ring_segments = 64;
+  shape.max_girth_deficit_mm = 1.0;
+  const Body body = GenerateParametricBody(shape);
+  ScanSimOptions booth;
+  booth.floor = false;
+  booth.outlier_fraction = 0;
+  booth.noise_sigma_mm = 0.5;
+  if (quick) booth.booth.width_px = 160, booth.booth.height_px = 120;
+  const ScanSimResult scan = SimulateScan(booth, body.mesh);
+  const Eigen::MatrixX3d& cloud = scan.cloud.points;
+  const SurfacePoint source = body.landmarks.at("back_neck");
+  // Mesh vertices the scan saw.
+  std::vector<bool> seen(static_cast<size_t>(body.mesh.num_vertices()));
+  {
+    const PointIndex index(cloud);
+    for (Eigen::Index v = 0; v < body.mesh.num_vertices(); ++v) {
+      double d2 = 0;
+      index.Nearest(body.mesh.vertices.row(v).transpose(), &d2);
+      seen[static_cast<size_t>(v)] = d2 <= 9.0;
+    }
+  }
+  double peak = 0, cgal_peak = 0;
+  const auto field = InChild([&] {
+    return CloudField({}, cloud, PositionOf(body.mesh, source), body.mesh.vertices);
+  }, &peak);
+  double cpu = g_child_cpu_s;
+  Eigen::VectorXd exact = Eigen::VectorXd::Constant(body.mesh.num_vertices(), NAN);
+  double cgal_s = 0, cgal_cpu = 0;
+  if (cgal) {
+    const auto e = InChild([&] { return ExactField(body.mesh, source); }, &cgal_peak);
+    cgal_cpu = g_child_cpu_s;
+    cgal_s = e[0];
+    exact = Tail(e, 1);
+  }
+  std::printf("%-26s body mesh %lld vertices, %lld seen by the scan\n", "",
+              static_cast<long long>(body.mesh.num_vertices()),
+              static_cast<long long>(std::count(seen.begin(), seen.end(), true)));
+  PrintRow("generated scan, field", cloud.rows(), field[2], field[0], field[1], cpu, peak, cgal_s,
+           cgal_cpu, cgal_peak, Compare(Tail(field, 3), exact, &seen));
+
+  // Ten datum-point segments, point to point.
+  std::vector<std::pair<std::string, std::string>> pairs;
+  std::set<std::pair<std::string, std::string>> unique;
+  for (const MeasurementDef& m : Catalogue::Builtin().measurements()) {
+    if (m.method != MeasurementMethod::kGeodesic) continue;
+    for (size_t i = 0; i + 1 < m.datum.size() && pairs.size() < 10; ++i) {
+      const std::string& a = m.datum[i];
+      const std::string& b = m.datum[i + 1];
+      if (a == "crotch" || b == "crotch" || !body.landmarks.count(a) || !body.landmarks.count(b))
+        continue;
+      if (unique.emplace(a, b).second) pairs.emplace_back(a, b);
+    }
+  }
+  const auto cloud_p2p = InChild([&] {
+    std::vector<double> out;
+    double t = Now();
+    CloudGeodesics geodesics({}, cloud);
+    out.push_back(Now() - t);
+    t = Now();
+    for (const auto& [a, b] : pairs)
+      out.push_back(geodesics.Between(PositionOf(body.mesh, body.landmarks.at(a)),
+                                      PositionOf(body.mesh, body.landmarks.at(b))).length_mm);
+    out.insert(out.begin() + 1, Now() - t);
+    out.insert(out.begin() + 2, geodesics.grid().num_nodes());
+    return out;
+  }, &peak);
+  cpu = g_child_cpu_s;
+  std::vector<double> exact_p2p(pairs.size(), NAN);
+  cgal_s = 0, cgal_cpu = 0;
+  if (cgal) {
+    const auto e = InChild([&] {
+      const double t = Now();
+      ExactGeodesics exact_mesh(body.mesh);
+      std::vector<double> out;
+      for (const auto& [a, b] : pairs)
+        out.push_back(exact_mesh.Distance(body.landmarks.at(a), body.landmarks.at(b)));
+      out.insert(out.begin(), Now() - t);
+      return out;
+    }, &cgal_peak);
+    cgal_cpu = g_child_cpu_s;
+    cgal_s = e[0];
+    std::copy(e.begin() + 1, e.end(), exact_p2p.begin());
+  }
+  Eigen::VectorXd c(static_cast<Eigen::Index>(pairs.size())), x(c.size());
+  for (size_t i = 0; i < pairs.size(); ++i) c[i] = cloud_p2p[3 + i], x[i] = exact_p2p[i];
+  PrintRow("generated scan, 10 pairs", cloud.rows(), cloud_p2p[2], cloud_p2p[0], cloud_p2p[1],
+           cpu, peak, cgal_s, cgal_cpu, cgal_peak, Compare(c, x));
+  for (size_t i = 0; i < pairs.size(); ++i)
+    std::printf("    %-20s -> %-20s cloud %8.2f  exact %8.2f  diff %+6.2f mm\n",
+                pairs[i].first.c_str(), pairs[i].second.c_str(), c[i], x[i], c[i] - x[i]);
+}
+
+int Main(int argc, char** argv) {
+  std::filesystem::path shared = BESPOKE_DEFAULT_SHARED_DIR;
+  bool cgal = true, quick = false;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--no-cgal")) cgal = false;
+    else if (!std::strcmp(argv[i], "--quick")) quick = true;
+    else if (!std::strcmp(argv[i], "--shared") && i + 1 < argc) shared = argv[++i];
+    else {
+      std::fprintf(stderr, "usage: geodesic_bench [--shared DIR] [--no-cgal] [--quick]\n");
+      return 1;
+    }
+  }
+  double load[3] = {0, 0, 0};
+  if (getloadavg(load, 3) > 0) std::printf("load average at start: %.2f\n", load[0]);
+  PrintHeader();
+  const std::filesystem::path meshes = shared / "data" / "meshes";
+  const bool have_meshes = std::filesystem::exists(meshes / "makehuman-body-remesh-116k.off");
+  if (!have_meshes) std::printf("(no %s: mesh rows skipped)\n", meshes.string().c_str());
+  Eigen::VectorXd body_exact;
+  TriangleMesh body;
+  if (have_meshes) {
+    body = LoadMesh(meshes / "makehuman-body-remesh-116k.off", LengthUnit::kDecimetre);
+    if (!quick) {
+      MeshRow("bunny 35k (vertices)", LoadMesh(meshes / "bunny-35k.off", LengthUnit::kMetre),
+              cgal, {});
+      MeshRow("bunny 109k (vertices)",
+              LoadMesh(meshes / "bunny-remesh-109k.off", LengthUnit::kMetre), cgal, {});
+    }
+    body_exact = MeshRow("body 116k (vertices)", body, cgal && !quick, {});
+  }
+  GeneratedScanRows(cgal, quick);
+  if (have_meshes) {
+    std::printf("\ngrowth: the 116k body cloud at four cell sizes (errors vs CGAL above)\n");
+    PrintHeader();
+    for (const double spacings : {6.0, 4.0, 3.0, 2.0}) {
+      CloudGeodesicsOptions options;
+      options.grid.auto_cell_spacings = spacings;
+      double peak = 0;
+      const auto r = InChild([&] {
+        return CloudField(options, body.vertices, body.vertices.row(0).transpose(), body.vertices);
+      }, &peak);
+      PrintRow("cell " + std::to_string(static_cast<int>(spacings)) + " spacings",
+               body.num_vertices(), r[2], r[0], r[1], g_child_cpu_s, peak, 0, 0, 0,
+               Compare(Tail(r, 3), body_exact));
+      std::printf("%-26s propagation %.2f us per node\n", "", 1e6 * r[1] / r[2]);
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace bespoke
+
+int main(int argc, char** argv) {
+  try {
+    return bespoke::Main(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "geodesic_bench: %s\n", e.what());
+    return 2;
+  }
+}
