@@ -114,8 +114,8 @@ void PrintTable(const CleanResult& result, double read_s, double write_s) {
   std::printf("%-22s %10s %10lld %9.3f\n", "total", "", static_cast<long long>(result.cloud.size()),
               read_s + result.total_time_s + write_s);
   const BodyFrame& f = result.frame;
-  std::printf("body frame: up from %s, front from %s (feet %.0f mm, head %.0f mm), height %.0f mm\n",
-              f.up_source.c_str(), f.front_source.c_str(), f.foot_offset_mm, f.head_offset_mm, f.height_mm);
+  std::printf("body frame: up from %s, front from %s (feet %.0f mm, nose %.0f mm), height %.0f mm\n",
+              f.up_source.c_str(), f.front_source.c_str(), f.foot_offset_mm, f.nose_cue_mm, f.height_mm);
   std::fflush(stdout);
 }
 

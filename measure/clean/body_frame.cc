@@ -136,8 +136,27 @@ FeetCue MeasureFeet(const BodyFrameOptions& options, const Projected& p, double 
 }
 
 // Head section centre (mouth to eyes) minus neck centre, along `forward`;
-// 0 when no neck is found.
-double MeasureHead(const Projected& p, double height, const std::vector<double>& lateral,
+// Width across (lateral) of the points within `depth` of the extreme of
+// `forward` in direction `sign` (+1 front tip, -1 back tip).
+double TipWidth(const std::vector<double>& across, const std::vector<double>& along, double sign,
+                double depth) {
+  double extreme = -1e300;
+  for (double f : along) extreme = std::max(extreme, sign * f);
+  double low = 1e300, high = -1e300;
+  for (size_t i = 0; i < along.size(); ++i) {
+    if (sign * along[i] < extreme - depth) continue;
+    low = std::min(low, across[i]);
+    high = std::max(high, across[i]);
+  }
+  return high - low;
+}
+
+// The nose: between the chin and the eyes, each horizontal section of the
+// head ends in a narrow tip at the front (the nose, ~30 mm wide 10 mm from
+// its tip) and a round one at the back (the occiput, ~75 mm). Returns the
+// narrowest back tip minus the narrowest front tip over those sections
+// (positive: +forward is the front), 0 when the head is not found.
+double MeasureNose(const Projected& p, double height, const std::vector<double>& lateral,
                    const std::vector<double>& forward) {
   std::vector<double> upper;
   for (size_t i = 0; i < p.z.size(); ++i) {
@@ -146,6 +165,7 @@ double MeasureHead(const Projected& p, double height, const std::vector<double>&
   if (upper.size() < 50) return 0.0;
   const double centre = ExtentCentre(upper);
   const double slab = 10.0;
+  // The neck: the narrowest section (arms excluded) between 75 and 92 %.
   double best_width = 1e300, neck_z = -1;
   for (double z = 0.75 * height; z <= 0.92 * height; z += slab) {
     std::vector<double> across;
@@ -159,14 +179,20 @@ double MeasureHead(const Projected& p, double height, const std::vector<double>&
     if (width < best_width) best_width = width, neck_z = z + slab / 2;
   }
   if (neck_z < 0) return 0.0;
-  std::vector<double> neck, head;
-  for (size_t i = 0; i < p.z.size(); ++i) {
-    if (std::abs(lateral[i] - centre) > 0.1 * height) continue;
-    if (std::abs(p.z[i] - neck_z) <= slab) neck.push_back(forward[i]);
-    if (p.z[i] >= neck_z + 0.03 * height && p.z[i] <= neck_z + 0.07 * height) head.push_back(forward[i]);
+  double front = 1e300, back = 1e300;
+  for (double z = neck_z + 0.02 * height; z <= neck_z + 0.09 * height; z += slab) {
+    std::vector<double> across, along;
+    for (size_t i = 0; i < p.z.size(); ++i) {
+      if (p.z[i] >= z && p.z[i] < z + slab && std::abs(lateral[i] - centre) <= 0.1 * height) {
+        across.push_back(lateral[i]);
+        along.push_back(forward[i]);
+      }
+    }
+    if (across.size() < 30) continue;
+    front = std::min(front, TipWidth(across, along, +1, 10.0));
+    back = std::min(back, TipWidth(across, along, -1, 10.0));
   }
-  if (neck.size() < 20 || head.size() < 20) return 0.0;
-  return ExtentCentre(head) - ExtentCentre(neck);
+  return front < 1e299 ? back - front : 0.0;
 }
 
 }  // namespace
@@ -181,7 +207,7 @@ void BodyFrameOptions::Check() const {
           "foot_fraction must be in (0, ankle_low_fraction]");
   require(ankle_low_fraction < ankle_high_fraction && ankle_high_fraction < 0.5,
           "need ankle_low_fraction < ankle_high_fraction < 0.5");
-  require(min_foot_offset_mm >= 0 && min_head_offset_mm >= 0, "minimum offsets must be >= 0");
+  require(min_foot_offset_mm >= 0 && min_nose_cue_mm >= 0, "minimum offsets must be >= 0");
 }
 
 BodyFrame EstimateBodyFrame(const BodyFrameOptions& options, const Eigen::MatrixX3d& points,
@@ -258,25 +284,25 @@ BodyFrame EstimateBodyFrame(const BodyFrameOptions& options, const Eigen::Matrix
   for (int s = 0; s < 2; ++s) foot_offset += feet.found[s] ? feet.offset[s] / feet.sides : 0.0;
   const bool feet_agree = feet.sides < 2 || (feet.offset[0] > 0) == (feet.offset[1] > 0);
   const bool feet_ok = feet.sides > 0 && feet_agree && std::abs(foot_offset) >= options.min_foot_offset_mm;
-  const double head_offset = MeasureHead(p, height, lat, fwd);
-  const bool head_ok = std::abs(head_offset) >= options.min_head_offset_mm;
+  const double nose_cue = MeasureNose(p, height, lat, fwd);
+  const bool nose_ok = std::abs(nose_cue) >= options.min_nose_cue_mm;
   double sign = 1.0;
   if (feet_ok) {
     sign = foot_offset > 0 ? 1.0 : -1.0;
     frame.front_source = "feet";
     if (feet.sides == 1) frame.flags.push_back("one_foot_found");
-    if (head_ok && (head_offset > 0) != (foot_offset > 0)) frame.flags.push_back("front_cues_disagree");
-  } else if (head_ok) {
-    sign = head_offset > 0 ? 1.0 : -1.0;
-    frame.front_source = "head";
-    frame.flags.push_back("front_from_head");
+    if (nose_ok && (nose_cue > 0) != (foot_offset > 0)) frame.flags.push_back("front_cues_disagree");
+  } else if (nose_ok) {
+    sign = nose_cue > 0 ? 1.0 : -1.0;
+    frame.front_source = "nose";
+    frame.flags.push_back("front_from_nose");
   } else {
-    sign = foot_offset + head_offset >= 0 ? 1.0 : -1.0;
+    sign = foot_offset + nose_cue >= 0 ? 1.0 : -1.0;
     frame.front_source = "none";
     frame.flags.push_back("front_uncertain");
   }
   frame.foot_offset_mm = sign * foot_offset;
-  frame.head_offset_mm = sign * head_offset;
+  frame.nose_cue_mm = sign * nose_cue;
   const Eigen::Vector3d forward = sign * forward0;
   const Eigen::Vector3d right = forward.cross(up).normalized();
 

@@ -24,10 +24,15 @@
 //        the footprint lies 50-90 mm in front of the centre of the ankle's
 //        section (the band `ankle_low_fraction`..`ankle_high_fraction` of
 //        the height, above the foot). Trusted when both feet agree and the mean offset is at
-//        least `min_foot_offset_mm`. Otherwise the head decides: the face
-//        lies ahead of the neck, so the head's section between the mouth and
-//        the eyes is centred ahead of the narrowest section of the neck;
-//        flag `front_from_head`. When neither cue is clear the result is
+//        least `min_foot_offset_mm`. Otherwise the nose decides: between the
+//        chin and the eyes each horizontal section of the head ends in a
+//        narrow tip at the front (10 mm from its tip the nose is ~30 mm
+//        wide) and a round one at the back (the occiput, ~75 mm); the cue is
+//        the narrowest back tip minus the narrowest front tip, trusted from
+//        `min_nose_cue_mm`; flag `front_from_nose`. (A first version compared
+//        the head's centre with the neck's: right on the parametric body,
+//        wrong on 6 of 6 MakeHuman bodies, whose neck leans forward.) A body
+//        model without a nose gives no cue. When neither cue is clear the result is
 //        flagged `front_uncertain` (the larger cue still picks the sign).
 //        Cues that disagree are flagged `front_cues_disagree`.
 //        Fails for feet hidden by long garments or cut off by the floor band,
@@ -58,7 +63,7 @@ struct BodyFrameOptions {
   double ankle_low_fraction = 0.05;   // ankle band, from. Default 0.05 (~90 mm).
   double ankle_high_fraction = 0.09;  // ankle band, to. Default 0.09 (~160 mm).
   double min_foot_offset_mm = 20.0;  // footprint ahead of the ankles. Default 20 mm.
-  double min_head_offset_mm = 10.0;  // face ahead of the neck. Default 10 mm.
+  double min_nose_cue_mm = 15.0;     // back tip minus nose tip width. Default 15 mm.
   // Throws InputError when a value is out of range.
   void Check() const;
 };
@@ -68,10 +73,10 @@ struct BodyFrame {
   std::string up_source;            // "floor" or "principal_axis"
   double end_area_ratio = 0.0;      // feet/head hull area (principal-axis up; also with a floor)
   double lateral_ratio = 0.0;       // major/minor horizontal variance
-  std::string front_source;         // "feet", "head" or "none"
+  std::string front_source;         // "feet", "nose" or "none"
   double foot_offset_mm = 0.0;      // footprint centre ahead of the ankle (mean of both feet), +y
   int feet_found = 0;               // 0, 1 or 2 sides with footprint and ankle points
-  double head_offset_mm = 0.0;      // head section centre ahead of the neck, +y
+  double nose_cue_mm = 0.0;         // occiput tip width minus nose tip width (> 0: nose at +y)
   double height_mm = 0.0;           // top of the body above z = 0
   std::vector<std::string> flags;   // see above; empty when every cue was clear
 };

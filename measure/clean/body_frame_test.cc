@@ -64,7 +64,7 @@ TEST(BodyFrameTest, WithTheFloorPlane) {
     EXPECT_EQ(frame.front_source, "feet");
     EXPECT_EQ(frame.feet_found, 2);
     EXPECT_NEAR(frame.foot_offset_mm, 65.0, 10.0);  // footprint centre ahead of the ankle axis
-    EXPECT_GT(frame.head_offset_mm, 10.0);          // the face is ahead of the neck
+    EXPECT_GT(frame.nose_cue_mm, 15.0);  // mm: the nose tip is narrower than the occiput
     EXPECT_NEAR(frame.height_mm, 1750.0, 3.0);
     EXPECT_TRUE(frame.flags.empty());
   }
@@ -87,13 +87,13 @@ TEST(BodyFrameTest, WithoutAFloor) {
   }
 }
 
-// Feet centred under the ankles give no front cue; the face ahead of the neck does.
-TEST(BodyFrameTest, FrontFromTheHeadWhenTheFeetDoNotTell) {
+// Feet centred under the ankles give no front cue; the nose does.
+TEST(BodyFrameTest, FrontFromTheNoseWhenTheFeetDoNotTell) {
   const SyntheticScene scene = BodyOnly(7, /*feet_forward=*/false, /*head_forward=*/true);
   const BodyFrame frame = EstimateBodyFrame(BodyFrameOptions{}, scene.cloud.points, TrueFloor(scene));
   const Errors e = Compare(frame, scene);
-  EXPECT_EQ(frame.front_source, "head");
-  EXPECT_EQ(frame.flags, std::vector<std::string>{"front_from_head"});
+  EXPECT_EQ(frame.front_source, "nose");
+  EXPECT_EQ(frame.flags, std::vector<std::string>{"front_from_nose"});
   EXPECT_LT(e.forward_deg, 1.0);
   EXPECT_LT(std::abs(frame.foot_offset_mm), 10.0);
 }

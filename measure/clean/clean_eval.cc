@@ -1,9 +1,10 @@
 // Evidence run: the cleaning chain on many virtual scans against their truth.
 //
 //   build/measure/clean_eval [--subjects N] [--seed S] [--no-floor] [--stray N]
-//                            [--resolution WxH] [--misalign-deg D]
+//                            [--width W --height H] [--misalign-deg D]
+//                            [--makehuman ../shared/data/bodies/makehuman]
 //
-// For each subject i: a parametric body drawn from seed S*1000+i+1, scanned
+// For each subject i: a parametric (or MakeHuman) body drawn from seed S*1000+i+1, scanned
 // by the simulated booth (scanners/scan_sim) in a random rigid pose, then
 // CleanScan with the default options. Prints one row per subject (pose
 // errors against the truth's scanner_from_body, points, time, flags) and a
@@ -13,11 +14,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "measure/clean/clean.h"
 #include "scanners/body/parametric_body.h"
+#include "scanners/makehuman/makehuman_body.h"
 #include "scanners/scan_sim/scan_sim.h"
 
 namespace {
@@ -41,6 +44,7 @@ int main(int argc, char** argv) {
   unsigned seed = 1;
   bool no_floor = false;
   double misalign_deg = 0;
+  std::string makehuman;
   app.add_option("--subjects", subjects, "Number of subjects")->capture_default_str();
   app.add_option("--seed", seed, "Seed of the set")->capture_default_str();
   app.add_flag("--no-floor", no_floor, "Scan without a floor patch");
@@ -48,18 +52,29 @@ int main(int argc, char** argv) {
   app.add_option("--width", width, "Depth image width per sensor")->capture_default_str();
   app.add_option("--height", height, "Depth image height per sensor")->capture_default_str();
   app.add_option("--misalign-deg", misalign_deg, "Per-sensor calibration error SD, degrees");
+  app.add_option("--makehuman", makehuman, "MakeHuman data folder: MakeHuman bodies instead");
   CLI11_PARSE(app, argc, argv);
+  std::unique_ptr<MakeHumanModel> model;
+  if (!makehuman.empty()) model = std::make_unique<MakeHumanModel>(makehuman);
 
   std::vector<double> up, facing, lateral, along, vertical, times;
   int front_wrong = 0;
-  std::printf("%4s %8s %8s %8s %8s %8s %8s %8s %7s  %s\n", "subj", "points", "up_deg", "face_deg",
-              "x_mm", "y_mm", "z_mm", "clean_s", "front", "flags");
+  std::printf("%4s %8s %8s %8s %8s %8s %8s %8s %7s %7s %7s  %s\n", "subj", "points", "up_deg", "face_deg",
+              "x_mm", "y_mm", "z_mm", "clean_s", "front", "foot_mm", "nose_mm", "flags");
   for (int i = 0; i < subjects; ++i) {
-    ParametricBodyOptions body_options;
-    body_options.seed = static_cast<std::uint64_t>(seed) * 1000 + static_cast<std::uint64_t>(i) + 1;
-    const Body body = GenerateParametricBody(body_options);
+    const std::uint64_t subject_seed = static_cast<std::uint64_t>(seed) * 1000 + static_cast<std::uint64_t>(i) + 1;
+    Body body;
+    if (model) {
+      MakeHumanBodyOptions options;
+      options.seed = subject_seed;
+      body = GenerateMakeHumanBody(options, model.get());
+    } else {
+      ParametricBodyOptions options;
+      options.seed = subject_seed;
+      body = GenerateParametricBody(options);
+    }
     ScanSimOptions sim;
-    sim.seed = body_options.seed;
+    sim.seed = subject_seed;
     sim.transform = ScanTransform::kRandom;
     sim.floor = !no_floor;
     sim.stray_objects = stray;
@@ -77,9 +92,10 @@ int main(int argc, char** argv) {
     const double face = AngleDeg(est.row(1), truth.row(1));
     std::string flags;
     for (const std::string& f : result.flags) flags += f + " ";
-    std::printf("%4d %8lld %8.3f %8.3f %8.1f %8.1f %8.1f %8.3f %7s  %s\n", i,
+    std::printf("%4d %8lld %8.3f %8.3f %8.1f %8.1f %8.1f %8.3f %7s %7.1f %7.1f  %s\n", i,
                 static_cast<long long>(scan.cloud.size()), AngleDeg(est.row(2), truth.row(2)), face,
-                origin.x(), origin.y(), origin.z(), seconds, result.frame.front_source.c_str(), flags.c_str());
+                origin.x(), origin.y(), origin.z(), seconds, result.frame.front_source.c_str(),
+                result.frame.foot_offset_mm, result.frame.nose_cue_mm, flags.c_str());
     std::fflush(stdout);
     up.push_back(AngleDeg(est.row(2), truth.row(2)));
     facing.push_back(face);

@@ -42,7 +42,7 @@ nlohmann::json ToJson(const CleanOptions& o) {
         {"ankle_low_fraction", o.body_frame.ankle_low_fraction},
         {"ankle_high_fraction", o.body_frame.ankle_high_fraction},
         {"min_foot_offset_mm", o.body_frame.min_foot_offset_mm},
-        {"min_head_offset_mm", o.body_frame.min_head_offset_mm}}},
+        {"min_nose_cue_mm", o.body_frame.min_nose_cue_mm}}},
       {"threads", o.threads},
   };
 }
@@ -78,7 +78,7 @@ nlohmann::json ToJson(const CleanResult& r) {
         {"front_source", f.front_source},
         {"foot_offset_mm", f.foot_offset_mm},
         {"feet_found", f.feet_found},
-        {"head_offset_mm", f.head_offset_mm},
+        {"nose_cue_mm", f.nose_cue_mm},
         {"height_mm", f.height_mm}}},
       {"normals",
        {{"by_exterior", r.normals.by_exterior},

@@ -12,6 +12,7 @@ namespace bespoke {
 namespace {
 
 struct Cell {
+  std::uint64_t key;  // (x, y, z) packed, when the ranges fit 21 bits each
   std::int32_t x, y, z;
   std::int32_t point;
   bool SameCell(const Cell& o) const { return x == o.x && y == o.y && z == o.z; }
@@ -28,12 +29,29 @@ std::vector<Cell> SortedCells(const Eigen::MatrixX3d& points, double leaf) {
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
     const Eigen::Vector3d p = points.row(i).transpose() * inverse;
     BESPOKE_CHECK(p.cwiseAbs().maxCoeff() < 2e9, "voxel grid: coordinate out of range");
-    cells[static_cast<size_t>(i)] = {static_cast<std::int32_t>(std::floor(p.x())),
+    cells[static_cast<size_t>(i)] = {0, static_cast<std::int32_t>(std::floor(p.x())),
                                      static_cast<std::int32_t>(std::floor(p.y())),
                                      static_cast<std::int32_t>(std::floor(p.z())),
                                      static_cast<std::int32_t>(i)};
   }
-  std::sort(cells.begin(), cells.end());
+  if (cells.empty()) return cells;
+  // Sorting one 64-bit key is ~2x faster than comparing three ints; a scan
+  // spanning more than 2^21 leaves (8 km at 4 mm) falls back to the latter.
+  std::int64_t low[3] = {cells[0].x, cells[0].y, cells[0].z}, high[3] = {low[0], low[1], low[2]};
+  for (const Cell& c : cells) {
+    const std::int64_t v[3] = {c.x, c.y, c.z};
+    for (int a = 0; a < 3; ++a) low[a] = std::min(low[a], v[a]), high[a] = std::max(high[a], v[a]);
+  }
+  constexpr std::int64_t kLimit = std::int64_t{1} << 21;
+  if (high[0] - low[0] < kLimit && high[1] - low[1] < kLimit && high[2] - low[2] < kLimit) {
+    for (Cell& c : cells) {
+      c.key = (static_cast<std::uint64_t>(c.x - low[0]) << 42) |
+              (static_cast<std::uint64_t>(c.y - low[1]) << 21) | static_cast<std::uint64_t>(c.z - low[2]);
+    }
+    std::sort(cells.begin(), cells.end(), [](const Cell& a, const Cell& b) { return a.key < b.key; });
+  } else {
+    std::sort(cells.begin(), cells.end());
+  }
   return cells;
 }
 
