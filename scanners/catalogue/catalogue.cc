@@ -59,7 +59,7 @@ const std::vector<std::pair<const char*, MeasurementMethod>> kMethods = {
 const std::vector<std::pair<const char*, GirthPlane>> kPlanes = {
     {"horizontal", GirthPlane::kHorizontal},
     {"perpendicular_to_axis", GirthPlane::kPerpendicularToAxis},
-    {"through_points_level_sideways", GirthPlane::kThroughPointsLevelSideways}};
+    {"through_points", GirthPlane::kThroughPoints}};
 
 template <typename Enum>
 std::string NameOf(Enum value, const std::vector<std::pair<const char*, Enum>>& table) {
@@ -86,7 +86,7 @@ void CheckArity(const MeasurementDef& m, const std::string& where) {
     case MeasurementMethod::kSectionHull:
       ok = ok && m.kind == MeasurementKind::kGirth && m.plane != GirthPlane::kNone;
       if (m.plane == GirthPlane::kPerpendicularToAxis) ok = ok && m.axis.size() == 2;
-      if (m.plane == GirthPlane::kThroughPointsLevelSideways) ok = ok && n == 2;
+      if (m.plane == GirthPlane::kThroughPoints) ok = ok && n == 3;
       break;
     case MeasurementMethod::kGeodesic:
       ok = ok && n >= 2 && m.kind == MeasurementKind::kLength;
@@ -121,6 +121,11 @@ MeasurementDef ParseMeasurement(const json& entry, const std::string& where) {
     if (!entry["to_floor"].is_boolean()) throw InputError(at + ": 'to_floor' is not a boolean");
     m.to_floor = entry["to_floor"].get<bool>();
   }
+  m.arms = OptionalString(entry, "arms", at);
+  if (m.arms != "" && m.arms != "check" && m.arms != "lower")
+    throw InputError(at + ": 'arms' must be check or lower, not '" + m.arms + "'");
+  if (!m.arms.empty() && m.plane != GirthPlane::kHorizontal)
+    throw InputError(at + ": 'arms' needs a horizontal girth");
   m.side = RequiredString(entry, "side", at);
   if (m.side != "right" && m.side != "both" && m.side != "centre")
     throw InputError(at + ": side must be right, both or centre, not '" + m.side + "'");

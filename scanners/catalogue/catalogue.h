@@ -45,7 +45,7 @@ enum class GirthPlane {
   kNone,                 // not a girth
   kHorizontal,           // z = mean z of the datum points
   kPerpendicularToAxis,  // through datum[0], normal along axis[1] - axis[0]
-  kThroughPointsLevelSideways,  // contains datum[0], datum[1] and the x (left-right) axis
+  kThroughPoints,        // through datum[0], datum[1], datum[2]
 };
 std::string ToString(GirthPlane plane);
 
@@ -57,6 +57,12 @@ struct MeasurementDef {
   std::vector<std::string> datum;  // landmark names, in the method's order
   std::vector<std::string> axis;   // two landmark names for kPerpendicularToAxis, else empty
   bool to_floor = false;           // kGeodesic: add the last datum point's height
+  // Horizontal trunk girths whose datum points include the left and right
+  // sides: "check" flags a section reaching > 30 mm beyond them (arms or
+  // hands merged into it); "lower" also moves the plane down in 1 mm steps
+  // (up to 100 mm) until the trunk's section is free (chest: "just under the
+  // armpits"); "" (default) neither.
+  std::string arms;
   std::string side;                // "right", "both" (uses both sides) or "centre"
   std::string definition, deviation, standard, thesis;  // deviation/thesis may be empty
   std::string valentina, freesewing;                    // empty where none exists

@@ -27,8 +27,8 @@ std::string MethodText(const MeasurementDef& m) {
     case MeasurementMethod::kSectionHull:
       if (m.plane == GirthPlane::kPerpendicularToAxis)
         return "hull of the section ⟂ axis " + Code(m.axis[0]) + " → " + Code(m.axis[1]);
-      if (m.plane == GirthPlane::kThroughPointsLevelSideways)
-        return "hull of the section in the plane through the datum points, level left-right";
+      if (m.plane == GirthPlane::kThroughPoints)
+        return "hull of the section in the plane through the three datum points";
       return "hull of the horizontal section";
     case MeasurementMethod::kGeodesic:
       return m.to_floor ? "geodesic chain, + height of the last point" : "geodesic chain";

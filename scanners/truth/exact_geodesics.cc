@@ -4,10 +4,10 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_shortest_path.h>
+#include <CGAL/boost/graph/iterator.h>
 
 #include <array>
 #include <cmath>
@@ -62,8 +62,20 @@ void BuildCgalMesh(const TriangleMesh& mesh, CgalMesh* out) {
                        "or neighbouring faces with opposite orientation)");
     BESPOKE_CHECK(static_cast<Eigen::Index>(added) == f, "CGAL face index differs from row");
   }
+  // A vertex is manifold when circulating around it reaches every face that
+  // uses it and crosses at most one border. (PMP::is_non_manifold_vertex
+  // answers the same but took 2.4 s on a 13k-vertex body.)
+  std::vector<int> uses(static_cast<std::size_t>(mesh.num_vertices()), 0);
+  for (Eigen::Index f = 0; f < mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) ++uses[static_cast<std::size_t>(mesh.faces(f, k))];
   for (const VertexIndex v : out->vertices()) {
-    if (!out->is_isolated(v) && CGAL::Polygon_mesh_processing::is_non_manifold_vertex(v, *out))
+    if (out->is_isolated(v)) continue;
+    int fan = 0, borders = 0;
+    for (const auto h : CGAL::halfedges_around_target(out->halfedge(v), *out))
+      (out->is_border(h) ? borders : fan) += 1;
+    // Surface_mesh chains a pinched vertex's fans through their borders:
+    // more than one border halfedge into v means more than one fan.
+    if (fan != uses[static_cast<std::size_t>(static_cast<int>(v))] || borders > 1)
       throw InputError("exact geodesics: vertex " + std::to_string(static_cast<int>(v)) +
                        " is non-manifold (faces around it form more than one fan)");
   }

@@ -250,6 +250,14 @@ TEST(ExactGeodesics, RejectsMeshesCgalCannotTake) {
              collinear.vertices.row(collinear.faces(0, 1)));
   EXPECT_THROW(ExactGeodesics{collinear}, InputError);
 
+  // Two triangles sharing only vertex 0: a non-manifold vertex (two fans).
+  TriangleMesh bowtie;
+  bowtie.vertices.resize(5, 3);
+  bowtie.vertices << 0, 0, 0, 1, 0, 0, 1, 1, 0, -1, 0, 0, -1, -1, 0;
+  bowtie.faces.resize(2, 3);
+  bowtie.faces << 0, 1, 2, 0, 3, 4;
+  EXPECT_THROW(ExactGeodesics{bowtie}, InputError);
+
   EXPECT_THROW(ExactGeodesics{TriangleMesh{}}, InputError);
 }
 

@@ -147,12 +147,42 @@ int NearestLoop(const std::vector<SectionLoop>& loops, const Eigen::Vector3d& po
   return best;
 }
 
-double LoopHullPerimeter(const SectionLoop& loop, const Eigen::Vector3d& plane_normal) {
-  const Eigen::Vector3d n = UnitNormal(plane_normal);
-  // An orthonormal basis (u, v) of the plane.
+namespace {
+
+// An orthonormal basis (u, v) of the plane with unit normal n.
+std::pair<Eigen::Vector3d, Eigen::Vector3d> PlaneBasis(const Eigen::Vector3d& n) {
   const Eigen::Vector3d helper =
       std::abs(n.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
-  const Eigen::Vector3d u = n.cross(helper).normalized(), v = n.cross(u);
+  const Eigen::Vector3d u = n.cross(helper).normalized();
+  return {u, n.cross(u)};
+}
+
+}  // namespace
+
+int EnclosingLoop(const std::vector<SectionLoop>& loops, const Eigen::Vector3d& point,
+                  const Eigen::Vector3d& plane_normal) {
+  const auto [u, v] = PlaneBasis(UnitNormal(plane_normal));
+  const double px = point.dot(u), py = point.dot(v);
+  int best = -1;
+  double best_area = std::numeric_limits<double>::infinity();
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    if (!loops[l].closed) continue;
+    const Eigen::VectorXd x = loops[l].points * u, y = loops[l].points * v;
+    const Eigen::Index k = x.size();
+    bool inside = false;
+    double area = 0;
+    for (Eigen::Index i = 0, j = k - 1; i < k; j = i++) {
+      if ((y[i] > py) != (y[j] > py) && px < (x[j] - x[i]) * (py - y[i]) / (y[j] - y[i]) + x[i])
+        inside = !inside;
+      area += x[j] * y[i] - x[i] * y[j];
+    }
+    if (inside && std::abs(area) < best_area) best_area = std::abs(area), best = static_cast<int>(l);
+  }
+  return best;
+}
+
+double LoopHullPerimeter(const SectionLoop& loop, const Eigen::Vector3d& plane_normal) {
+  const auto [u, v] = PlaneBasis(UnitNormal(plane_normal));
   Eigen::MatrixX2d projected(loop.points.rows(), 2);
   projected.col(0) = loop.points * u;
   projected.col(1) = loop.points * v;

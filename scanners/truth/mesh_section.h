@@ -39,6 +39,13 @@ double DistanceToLoop(const SectionLoop& loop, const Eigen::Vector3d& point);
 // datum point it is), or -1 when there are no loops.
 int NearestLoop(const std::vector<SectionLoop>& loops, const Eigen::Vector3d& point);
 
+// Index of the closed loop that encloses `point` (projected along
+// `plane_normal`; the innermost when loops nest), or -1 when none does. For
+// a trunk girth with several datum points, their centroid lies inside the
+// trunk's loop, which picks it even where an arm's loop passes closer.
+int EnclosingLoop(const std::vector<SectionLoop>& loops, const Eigen::Vector3d& point,
+                  const Eigen::Vector3d& plane_normal);
+
 // Perimeter of the convex hull of the loop's points projected onto the plane
 // with normal `plane_normal` (mm): the girth a tape pulled tight would read.
 double LoopHullPerimeter(const SectionLoop& loop, const Eigen::Vector3d& plane_normal);
