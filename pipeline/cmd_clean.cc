@@ -99,20 +99,23 @@ void AddStageOptions(CLI::App& app, CleanCommandOptions& o) {
 }
 
 void PrintTable(const CleanResult& result, double read_s, double write_s) {
-  std::printf("%-22s %10s %10s %9s\n", "stage", "points in", "points out", "time s");
+  std::printf("%-22s %10s %10s %9s %9s\n", "stage", "points in", "points out", "wall s", "cpu s");
   std::printf("%-22s %10s %10lld %9.3f\n", "read", "", static_cast<long long>(result.stages.front().points_in),
               read_s);
+  double cpu = 0;
   for (const CleanStage& s : result.stages) {
     if (!s.enabled) {
-      std::printf("%-22s %10s %10s %9s\n", s.name.c_str(), "off", "", "");
+      std::printf("%-22s %10s\n", s.name.c_str(), "off");
       continue;
     }
-    std::printf("%-22s %10lld %10lld %9.3f\n", s.name.c_str(), static_cast<long long>(s.points_in),
-                static_cast<long long>(s.points_out), s.time_s);
+    std::printf("%-22s %10lld %10lld %9.3f %9.3f\n", s.name.c_str(), static_cast<long long>(s.points_in),
+                static_cast<long long>(s.points_out), s.time_s, s.cpu_s);
+    cpu += s.cpu_s;
   }
   std::printf("%-22s %10s %10s %9.3f\n", "write", "", "", write_s);
-  std::printf("%-22s %10s %10lld %9.3f\n", "total", "", static_cast<long long>(result.cloud.size()),
-              read_s + result.total_time_s + write_s);
+  std::printf("%-22s %10s %10lld %9.3f %9.3f\n", "cleaning", "", static_cast<long long>(result.cloud.size()),
+              result.total_time_s, cpu);
+  std::printf("%-22s %10s %10s %9.3f\n", "total", "", "", read_s + result.total_time_s + write_s);
   const BodyFrame& f = result.frame;
   std::printf("body frame: up from %s, front from %s (feet %.0f mm, nose %.0f mm), height %.0f mm\n",
               f.up_source.c_str(), f.front_source.c_str(), f.foot_offset_mm, f.nose_cue_mm, f.height_mm);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <string>
 
 #include "measure/clean/neighbours.h"
@@ -37,8 +38,10 @@ class Chain {
     record.enabled = enabled;
     record.points_in = cloud->size();
     const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpu_start = std::clock();
     if (enabled) stage();
     record.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    record.cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
     record.points_out = cloud->size();
     result_->stages.push_back(record);
     ProgressUpdate(progress_, static_cast<std::int64_t>(result_->stages.size()));

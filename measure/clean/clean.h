@@ -69,6 +69,7 @@ struct CleanStage {
   std::int64_t points_in = 0;
   std::int64_t points_out = 0;
   double time_s = 0.0;           // wall time
+  double cpu_s = 0.0;            // process CPU time, all threads (wall is inflated on a busy machine)
 };
 
 struct CleanResult {

@@ -55,7 +55,8 @@ nlohmann::json ToJson(const CleanResult& r) {
                       {"enabled", s.enabled},
                       {"points_in", s.points_in},
                       {"points_out", s.points_out},
-                      {"time_s", s.time_s}});
+                      {"time_s", s.time_s},
+                      {"cpu_s", s.cpu_s}});
   }
   json floor = nullptr;
   if (r.floor) {
