@@ -13,9 +13,10 @@ CommandRunner SetupBatchCommand(CLI::App& app);
 CommandRunner SetupBatchMergeCommand(CLI::App& app);
 CommandRunner SetupGeodesicCommand(CLI::App& app);
 CommandRunner SetupValidateCommand(CLI::App& app);
+CommandRunner SetupScanSimCommand(CLI::App& app);
+CommandRunner SetupSynthSetCommand(CLI::App& app);
 CommandRunner SetupResizeCommand(CLI::App& app);
 CommandRunner SetupDraftCommand(CLI::App& app);
-CommandRunner SetupScanSimCommand(CLI::App& app);
 
 const std::vector<Command>& AllCommands() {
   static const std::vector<Command> commands = {
@@ -35,12 +36,14 @@ const std::vector<Command>& AllCommands() {
        &SetupGeodesicCommand},
       {"validate", "Compare a scan's cloud geodesics with exact ones on a reconstructed mesh",
        &SetupValidateCommand},
+      {"scan-sim", "Simulate a body-scanner booth: a realistic noisy scan of a body mesh (+ its truth)",
+       &SetupScanSimCommand},
+      {"synth-set", "A reproducible set of test subjects: bodies, truths and simulated scans from seeds",
+       &SetupSynthSetCommand},
       {"resize", "Fit a sewing pattern to a body's measurements (multi-objective GA, thesis ch. 4)",
        &SetupResizeCommand},
       {"draft", "Draft a built-in design (shirt, trousers) directly for a body's measurements",
        &SetupDraftCommand},
-      {"scan-sim", "Simulate a body-scanner booth: a realistic noisy scan of a body mesh (+ its truth)",
-       &SetupScanSimCommand},
   };
   return commands;
 }

@@ -103,8 +103,11 @@ Eigen::VectorXd CloudGeodesics::DistancesAt(const Eigen::MatrixX3d& points) {
   Eigen::VectorXd out(points.rows());
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
     const Eigen::Vector3d x = points.row(i).transpose();
-    out[i] = x.allFinite() ? cached_->DistanceNear(grid_.LocateNode(x), x)
-                           : std::numeric_limits<double>::infinity();
+    // Prefer the source's piece of the scan over a small unreached island.
+    out[i] = x.allFinite()
+                 ? cached_->DistanceNear(
+                       grid_.LocateNode(x, nullptr, grid_.component(cached_->source_node())), x)
+                 : std::numeric_limits<double>::infinity();
   }
   return out;
 }

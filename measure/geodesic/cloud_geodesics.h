@@ -75,8 +75,9 @@ class CloudGeodesics {
   CloudDistanceField DistancesFrom(const Eigen::Vector3d& source, Progress* progress = nullptr);
   CloudGeodesicPath Between(const Eigen::Vector3d& from, const Eigen::Vector3d& to);
   // Distances from the last DistancesFrom source to other points near the
-  // surface (#Q x 3, mm; e.g. a mesh's vertices): each point takes its nearest
-  // scan point's node, carried to first order as for the scan's own points.
+  // surface (#Q x 3, mm; e.g. a mesh's vertices): each point takes the node
+  // of its nearest scan point on the source's piece of the scan, carried to
+  // first order as for the scan's own points.
   // +inf where unreachable. InputError before any DistancesFrom call.
   Eigen::VectorXd DistancesAt(const Eigen::MatrixX3d& points);
 

@@ -413,26 +413,44 @@ int CloudGrid::WalkToNearest(const Eigen::Vector3d& x, int start) const {
 
 bool CloudGrid::PlaneAt(const Eigen::Vector3d& position, int* hint, TangentPlane* plane) const {
   if (!position.allFinite()) return false;
-  *hint = (*hint >= 0 && *hint < num_nodes()) ? WalkToNearest(position, *hint)
-                                               : LocateNode(position);
-  const LocalSurface& nearest = surfaces_[static_cast<size_t>(*hint)];
-  *plane = nearest.PlaneAt(position);
+  if (*hint < 0 || *hint >= num_nodes()) *hint = LocateNode(position);
+  // Walk to the nearest site over links, keeping the last squared distances
+  // for the blend below (the nearest node and its links).
+  thread_local std::vector<double> d2;
+  int node = *hint;
+  for (int step = 0; step < 64; ++step) {
+    const int* begin = links_begin(node);
+    const int count = static_cast<int>(links_end(node) - begin);
+    d2.resize(static_cast<size_t>(count) + 1);
+    d2[0] = (position - sites_[static_cast<size_t>(node)]).squaredNorm();
+    int best = node;
+    double best_d2 = d2[0];
+    for (int i = 0; i < count; ++i) {
+      d2[static_cast<size_t>(i) + 1] = (position - sites_[static_cast<size_t>(begin[i])]).squaredNorm();
+      if (d2[static_cast<size_t>(i) + 1] < best_d2) best_d2 = d2[static_cast<size_t>(i) + 1], best = begin[i];
+    }
+    if (best == node) break;
+    node = best;
+  }
+  *hint = node;
+  *plane = surfaces_[static_cast<size_t>(node)].PlaneAt(position);
   if (blend_ <= 0) return true;
   // Partition of unity over the nearest node and its linked neighbours.
   const Eigen::Vector3d reference = plane->normal;
   Eigen::Vector3d point = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
   double total = 0;
-  auto add = [&](int node) {
-    const double t2 = (position - sites_[static_cast<size_t>(node)]).squaredNorm() / (blend_ * blend_);
-    if (t2 >= 1) return;
+  const double inverse = 1.0 / (blend_ * blend_);
+  const int* links = links_begin(node);
+  for (size_t i = 0; i < d2.size(); ++i) {
+    const double t2 = d2[i] * inverse;
+    if (t2 >= 1) continue;
     const double w = (1 - t2) * (1 - t2);
-    const TangentPlane p = surfaces_[static_cast<size_t>(node)].PlaneAt(position);
+    const TangentPlane p =
+        i == 0 ? *plane : surfaces_[static_cast<size_t>(links[i - 1])].PlaneAt(position);
     point += w * p.point;
     normal += (p.normal.dot(reference) < 0 ? -w : w) * p.normal;
     total += w;
-  };
-  add(*hint);
-  for (const int* l = links_begin(*hint); l != links_end(*hint); ++l) add(*l);
+  }
   if (total > 0 && normal.norm() > 0) {
     plane->point = point / total;
     plane->normal = normal.normalized();

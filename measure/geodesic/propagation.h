@@ -54,8 +54,8 @@ struct PropagationOptions {
   double tie_cells = 0.05;    // kPredicted: distance ties within this many cells; default 0.05
   // The flow run for each new node, in units of the grid's cell size so that
   // one setting suits bodies in mm and small objects alike:
-  int flow_iterations = 10;           // at most this many iterations; default 10
-  double flow_tolerance_cells = 0.002;  // converged below this move; default 0.002 cells
+  int flow_iterations = 6;            // at most this many iterations; default 6
+  double flow_tolerance_cells = 0.005;  // converged below this move; default 0.005 cells
   double replan_cells = 0.1;          // planes re-estimated after a slide of 0.1 cells
   double max_step_segments = 1.0;     // trust region, see CurvatureFlowOptions; default 1
   void Check() const;         // InputError when out of range
