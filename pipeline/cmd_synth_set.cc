@@ -10,8 +10,8 @@
 // K subjects' bodies and scans are drawn side by side into one PNG. With
 // --skip-reference, truth.json holds the datum points but no reference
 // measurements (those need exact geodesics: minutes per body).
-// --param k=v sets parametric-body sizes after the seeded draw (parametric
-// only); the MakeHuman model draws from its own seed.
+// --param k=v sets body sizes or model values after the seeded draw, for
+// every subject (scanners/synth/synth_body.h).
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
@@ -27,8 +27,8 @@
 #include "scanners/core/errors.h"
 #include "scanners/core/json_io.h"
 #include "scanners/io/scan_io.h"
-#include "scanners/makehuman/makehuman_body.h"
 #include "scanners/render/render.h"
+#include "scanners/synth/synth_body.h"
 #include "scanners/truth/truth_file.h"
 
 namespace bespoke {
@@ -50,38 +50,11 @@ struct SynthSetOptions {
     if (model != "parametric" && model != "makehuman") {
       throw InputError("--model must be parametric or makehuman, not '" + model + "'");
     }
-    if (!params.empty() && model != "parametric") throw InputError("--param applies to --model parametric only");
     if (!preview.empty() && preview.extension() != ".png") throw InputError(preview, "--preview must be a .png file");
     if (preview_count < 1 || preview_count > 16) throw InputError("--preview-count must be 1-16");
     scanner.Check();
   }
 };
-
-std::filesystem::path DefaultMakeHumanDir() {
-  const char* env = std::getenv("BESPOKE_SHARED_DIR");
-  const std::filesystem::path shared = env ? std::filesystem::path(env) : std::filesystem::path("../shared");
-  return shared / "data" / "bodies" / "makehuman";
-}
-
-ParametricBodyOptions ParametricFor(const SynthSetOptions& o, std::uint64_t seed) {
-  ParametricBodyOptions p;
-  p.seed = seed;
-  p = SeededOptions(p);
-  for (const std::string& kv : o.params) {
-    const size_t eq = kv.find('=');
-    if (eq == std::string::npos) throw InputError("--param must be name=value, not '" + kv + "'");
-    double value = 0;
-    try {
-      size_t used = 0;
-      value = std::stod(kv.substr(eq + 1), &used);
-      if (used != kv.size() - eq - 1) throw std::invalid_argument("trailing text");
-    } catch (const std::exception&) {
-      throw InputError("--param " + kv + ": the value is not a number");
-    }
-    p.Set(kv.substr(0, eq), value);
-  }
-  return p;
-}
 
 // Front view of the body with its datum points beside the front view of its
 // scan (the scan in the body frame).
@@ -118,7 +91,7 @@ CommandRunner SetupSynthSetCommand(CLI::App& app) {
   app.add_option("-o,--output", o->output, "Folder to fill (created if missing)")->required();
   app.add_option("--preview", o->preview, "Draw the first subjects' bodies and scans into this PNG");
   app.add_option("--preview-count", o->preview_count, "Subjects in the preview (default 4)");
-  app.add_option("--param", o->params, "Parametric body size after the seeded draw, name=value (repeatable)");
+  app.add_option("--param", o->params, "Body size or model value after the seeded draw, name=value (repeatable)");
   app.add_flag("--skip-reference", o->skip_reference,
                "Write datum points only, no reference measurements (exact geodesics take minutes per body)");
   AddScanSimOptions(app, &o->scanner, /*seed_option=*/false);  // each scan takes its subject's seed
@@ -126,10 +99,7 @@ CommandRunner SetupSynthSetCommand(CLI::App& app) {
     o->Check();
     CreateDirectories(o->output);
     const Catalogue& catalogue = Catalogue::Builtin();
-    std::unique_ptr<MakeHumanModel> makehuman;
-    if (o->model == "makehuman") {
-      makehuman = std::make_unique<MakeHumanModel>(o->makehuman_dir.empty() ? DefaultMakeHumanDir() : o->makehuman_dir);
-    }
+    SynthBodyGenerator generator;
     ProgressBar bar(global.quiet);
     nlohmann::json subjects = nlohmann::json::array();
     std::vector<RgbImage> pictures;
@@ -140,14 +110,12 @@ CommandRunner SetupSynthSetCommand(CLI::App& app) {
       std::snprintf(name, sizeof(name), "subject_%03d", i);
       const std::filesystem::path dir = o->output / name;
       CreateDirectories(dir);
-      Body body;
-      if (makehuman) {
-        MakeHumanBodyOptions mh;
-        mh.seed = seed;
-        body = GenerateMakeHumanBody(mh, makehuman.get());
-      } else {
-        body = GenerateParametricBody(ParametricFor(*o, seed));
-      }
+      SynthBodyOptions body_options;
+      body_options.model = o->model;
+      body_options.seed = seed;
+      body_options.params = o->params;
+      body_options.makehuman_dir = o->makehuman_dir;
+      const Body body = generator.Generate(body_options);
       WriteOptions mesh_write;
       mesh_write.comment = "bespoke synth-set " + o->model + " seed " + std::to_string(seed) + "; units mm; frame body";
       WriteMesh(mesh_write, body.mesh, dir / "body.obj");

@@ -14,6 +14,7 @@ CommandRunner SetupBatchMergeCommand(CLI::App& app);
 CommandRunner SetupGeodesicCommand(CLI::App& app);
 CommandRunner SetupValidateCommand(CLI::App& app);
 CommandRunner SetupScanSimCommand(CLI::App& app);
+CommandRunner SetupSynthBodyCommand(CLI::App& app);
 CommandRunner SetupSynthSetCommand(CLI::App& app);
 CommandRunner SetupResizeCommand(CLI::App& app);
 CommandRunner SetupDraftCommand(CLI::App& app);
@@ -38,6 +39,8 @@ const std::vector<Command>& AllCommands() {
        &SetupValidateCommand},
       {"scan-sim", "Simulate a body-scanner booth: a realistic noisy scan of a body mesh (+ its truth)",
        &SetupScanSimCommand},
+      {"synth-body", "A test subject's body from a seed (parametric or MakeHuman) + its exact truth",
+       &SetupSynthBodyCommand},
       {"synth-set", "A reproducible set of test subjects: bodies, truths and simulated scans from seeds",
        &SetupSynthSetCommand},
       {"resize", "Fit a sewing pattern to a body's measurements (multi-objective GA, thesis ch. 4)",
