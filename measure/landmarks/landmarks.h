@@ -68,6 +68,7 @@ LandmarkSet DetectLandmarks(const LandmarkOptions& options, const PointCloud& cl
 struct LandmarkOverrides {
   std::string frame = "scan";  // "scan" or "body"
   std::string units = "mm";    // unit of the coordinates: "mm", "cm", "dm" or "m"
+  // As written in the file, in `units` (ApplyLandmarkOverrides converts).
   std::map<std::string, Eigen::Vector3d> points;
 };
 // InputError naming the file for unreadable JSON, an unknown landmark name,
