@@ -4,6 +4,7 @@
 #include "scanners/io/scan_io.h"
 
 #include <algorithm>
+#include <vector>
 #include <cctype>
 #include <cmath>
 #include <limits>
@@ -121,18 +122,44 @@ std::string Number(double value) {
   return out;
 }
 
-std::optional<LengthUnit> ResolveUnit(const ReadOptions& options, const ReadReport& report) {
-  if (options.units) return options.units;
-  const Eigen::AlignedBox3d& box = report.bounds_file_units;
-  return box.isEmpty() ? std::nullopt : GuessLengthUnit(box.sizes().maxCoeff());
+// The largest side of the box holding the central 98 % of the points on each
+// axis (1 % trimmed at either end): a raw scan's flying pixels and clutter
+// (a few percent, some metres away) must not decide the unit.
+double RobustExtent(const Eigen::MatrixX3d& points) {
+  const Eigen::Index n = points.rows();
+  if (n == 0) return 0.0;
+  const Eigen::Index cut = n / 100;
+  double extent = 0.0;
+  std::vector<double> values(static_cast<std::size_t>(n));
+  for (int axis = 0; axis < 3; ++axis) {
+    for (Eigen::Index i = 0; i < n; ++i) values[static_cast<std::size_t>(i)] = points(i, axis);
+    auto low = values.begin() + cut, high = values.end() - 1 - cut;
+    std::nth_element(values.begin(), low, values.end());
+    const double low_value = *low;
+    std::nth_element(low, high, values.end());
+    extent = std::max(extent, *high - low_value);
+  }
+  return extent;
 }
 
-std::string UnitProblem(const ReadReport& report) {
+// The unit: given, else guessed from the full box, else (outliers) from the
+// central 98 % of the points.
+std::optional<LengthUnit> ResolveUnit(const ReadOptions& options, const ReadReport& report,
+                                      const Eigen::MatrixX3d& points) {
+  if (options.units) return options.units;
+  const Eigen::AlignedBox3d& box = report.bounds_file_units;
+  if (box.isEmpty()) return std::nullopt;
+  if (auto unit = GuessLengthUnit(box.sizes().maxCoeff())) return unit;
+  return GuessLengthUnit(RobustExtent(points));
+}
+
+std::string UnitProblem(const ReadReport& report, const Eigen::MatrixX3d& points) {
   const Eigen::AlignedBox3d& box = report.bounds_file_units;
   const double extent = box.isEmpty() ? 0.0 : box.sizes().maxCoeff();
   return "cannot tell the length unit: the largest side of the bounding box is " +
-         Number(extent) + " file units, which is not a body's size (0.5 m to 2.6 m) in mm, cm, "
-         "dm or m";
+         Number(extent) + " file units (" + Number(RobustExtent(points)) +
+         " without the outermost 1 % of points on each side), which is not a body's size "
+         "(0.5 m to 2.6 m) in mm, cm, dm or m";
 }
 
 Scan FinishScan(const ReadOptions& options, const std::filesystem::path& file,
@@ -158,8 +185,8 @@ Scan FinishScan(const ReadOptions& options, const std::filesystem::path& file,
     report.warnings.push_back("normals dropped: some finite points have NaN/Inf normals");
   }
   report.bounds_file_units = BoundsOf(scan.cloud.points);
-  const auto unit = ResolveUnit(options, report);
-  if (!unit) Fail(file, UnitProblem(report) + "; give it with --units mm|cm|dm|m");
+  const auto unit = ResolveUnit(options, report, scan.cloud.points);
+  if (!unit) Fail(file, UnitProblem(report, scan.cloud.points) + "; give it with --units mm|cm|dm|m");
   report.unit = *unit;
   report.unit_guessed = !options.units.has_value();
   scan.cloud.points *= MillimetresPer(*unit);
@@ -180,12 +207,12 @@ Mesh FinishMesh(const ReadOptions& options, const std::filesystem::path& file,
     }
   }
   mesh.report.bounds_file_units = BoundsOf(raw.cloud.points);
-  const auto unit = ResolveUnit(options, mesh.report);
+  const auto unit = ResolveUnit(options, mesh.report, raw.cloud.points);
   if (unit) {
     mesh.report.unit = *unit;
     mesh.report.unit_guessed = !options.units.has_value();
   } else {
-    mesh.report.warnings.push_back(UnitProblem(mesh.report) + "; reported as mm");
+    mesh.report.warnings.push_back(UnitProblem(mesh.report, raw.cloud.points) + "; reported as mm");
   }
   mesh.mesh.vertices = std::move(raw.cloud.points);
   mesh.mesh.faces = std::move(raw.faces);

@@ -47,6 +47,30 @@ TEST(ScanIoRead, ScansOfMeshFilesAreTheirVerticesAndCountFaces) {
   EXPECT_EQ(scan.report.bounds_file_units.max(), Eigen::Vector3d(1, 1, 1));
 }
 
+// A raw scan in metres: a 1.75 m column of points plus 1 % outliers up to
+// 4 m away (flying pixels, clutter). The full box (4.7 m) is no body's size;
+// the central 98 % of the points is, so the unit is guessed as metres. Far
+// more outliers than that leave the unit undecided, an InputError.
+TEST(ScanIoRead, UnitGuessIgnoresAFewOutliers) {
+  TempDir dir;
+  std::string xyz;
+  for (int i = 0; i < 990; ++i) {
+    xyz += "0.1 0.05 " + std::to_string(1.75 * i / 989.0) + "\n";
+  }
+  for (int i = 0; i < 10; ++i) xyz += "3.5 -1.2 " + std::to_string(0.4 * i) + "\n";
+  WriteBytes(dir / "metres.xyz", xyz);
+  ReadOptions options = FixtureOptions();
+  options.units.reset();  // guess
+  const Scan scan = ReadScan(options, dir / "metres.xyz");
+  EXPECT_EQ(scan.report.unit, LengthUnit::kMetre);
+  EXPECT_TRUE(scan.report.unit_guessed);
+  EXPECT_NEAR(scan.cloud.points(989, 2), 1750.0, 1e-6);  // the body's top, in mm
+  for (int i = 0; i < 100; ++i) xyz += "40 -12 " + std::to_string(0.4 * i) + "\n";
+  WriteBytes(dir / "cluttered.xyz", xyz);
+  ExpectInputError([&] { ReadScan(options, dir / "cluttered.xyz"); }, dir / "cluttered.xyz",
+                   "cannot tell the length unit");
+}
+
 TEST(ScanIoRead, PointFormatsAreNotMeshes) {
   TempDir dir;
   WriteBytes(dir / "p.xyz", "1 2 3\n4 5 6\n7 8 9\n");
