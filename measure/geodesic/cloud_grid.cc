@@ -258,15 +258,19 @@ bool CloudGrid::Connected(int a, int b, double cos_max) {
     ++link_stats_.offset;
     return false;
   }
-  // A scan point near the chord's middle; "near" allows for the local
-  // sampling, which is much sparser than the median in places.
-  double d2 = 0;
-  index_->Nearest(0.5 * (pa + pb), &d2);
+  // A scan point near the chord's middle (and, on a long link between sparse
+  // nodes, near every point a cell apart along it); "near" allows for the
+  // local sampling, which is much sparser than the median in places.
   const double reach =
       std::max(0.6 * gap_, 1.5 * std::max(local_spacing_[a], local_spacing_[b]));
-  if (d2 > reach * reach) {
-    ++link_stats_.continuity;
-    return false;
+  const int pieces = 2 * std::max(1, static_cast<int>(std::ceil((pb - pa).norm() / (2 * cell_))));
+  for (int k = 1; k < pieces; ++k) {
+    double d2 = 0;
+    index_->Nearest(pa + (pb - pa) * (static_cast<double>(k) / pieces), &d2);
+    if (d2 > reach * reach) {
+      ++link_stats_.continuity;
+      return false;
+    }
   }
   ++link_stats_.linked;
   return true;
@@ -296,6 +300,7 @@ void CloudGrid::LinkNodes(const CloudGridOptions& options) {
             if (Connected(a, b, cos_max)) pairs.emplace_back(a, b);
         }
   }
+  LinkSparseNodes(cos_max, &pairs);
   link_offsets_.assign(static_cast<size_t>(nodes) + 1, 0);
   for (const auto& [a, b] : pairs) ++link_offsets_[a + 1], ++link_offsets_[b + 1];
   for (int i = 0; i < nodes; ++i) link_offsets_[i + 1] += link_offsets_[i];
@@ -305,6 +310,47 @@ void CloudGrid::LinkNodes(const CloudGridOptions& options) {
     link_targets_[fill[a]++] = b;
     link_targets_[fill[b]++] = a;
   }
+}
+
+// Where the scan is sparser than the grid (skin seen at a grazing angle, as
+// under the arm), most cells hold one point or none, and the 26-neighbourhood
+// leaves nodes with one or two links or none: a graph full of holes, around
+// which the wavefront detours (a 13 mm detour on an armpit-to-wrist length).
+// Such nodes are also linked to the nodes of cells further out, up to
+// kSparseReach local spacings (and 3 cells) away, under the same tests as
+// adjacent ones (normals, offsets, scan points all along the chord), so a
+// sparse patch is as well connected as a dense one and still never bridges
+// an air gap between sheets.
+void CloudGrid::LinkSparseNodes(double cos_max, std::vector<std::pair<int, int>>* pairs) {
+  constexpr double kSparseReach = 2.0;
+  const int nodes = num_nodes();
+  const size_t before = pairs->size();
+  for (int a = 0; a < nodes; ++a) {
+    const double radius = std::min(kSparseReach * local_spacing_[a], 3 * cell_);
+    const int span = static_cast<int>(std::ceil(radius / cell_));
+    if (span < 2) continue;
+    const std::int64_t key = node_cell_[a];
+    const std::int64_t c[3] = {key % dims_[0], (key / dims_[0]) % dims_[1],
+                               key / (dims_[0] * dims_[1])};
+    for (int dz = -span; dz <= span; ++dz)
+      for (int dy = -span; dy <= span; ++dy)
+        for (int dx = -span; dx <= span; ++dx) {
+          if (std::max({std::abs(dx), std::abs(dy), std::abs(dz)}) < 2) continue;  // done
+          const std::int64_t x = c[0] + dx, y = c[1] + dy, z = c[2] + dz;
+          if (x < 0 || y < 0 || z < 0 || x >= dims_[0] || y >= dims_[1] || z >= dims_[2])
+            continue;
+          const auto it = cells_.find(x + dims_[0] * (y + dims_[1] * z));
+          if (it == cells_.end()) continue;
+          for (int b = it->second.first; b < it->second.first + it->second.second; ++b) {
+            // Each pair once: tested from the sparser end (ties: lower index).
+            const double rb = std::min(kSparseReach * local_spacing_[b], 3 * cell_);
+            if (rb > radius || (rb == radius && b < a)) continue;
+            if ((sites_[a] - sites_[b]).norm() > radius) continue;
+            if (Connected(a, b, cos_max)) pairs->emplace_back(a, b);
+          }
+        }
+  }
+  link_stats_.long_links = static_cast<std::int64_t>(pairs->size() - before);
 }
 
 int CloudGrid::LocateNode(const Eigen::Vector3d& x, double* distance_mm, int component) const {

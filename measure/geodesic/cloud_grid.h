@@ -13,7 +13,8 @@
 //     (FLANN k-d tree), ignoring points off its own sheet;
 //   - a site: the mean of its points (the thesis's "destination") moved onto
 //     that surface.
-// Two nodes in neighbouring cells (26-neighbourhood) are LINKED only where the
+// Two nodes in neighbouring cells (26-neighbourhood; farther where the scan is
+// sparser than the grid, see LinkSparseNodes) are LINKED only where the
 // surface connects them: normals within max_link_angle_deg, each site within
 // sheet_gap_mm / 2 of the other's surface, and a scan point near the chord's
 // midpoint (within 0.6 sheet_gap_mm or 1.5 local point spacings). Sheets separated
@@ -67,6 +68,7 @@ struct LinkStats {
   std::int64_t angle = 0;       // normals disagree
   std::int64_t offset = 0;      // a site is off the other's surface
   std::int64_t continuity = 0;  // no scan point near the chord's midpoint
+  std::int64_t long_links = 0;  // of `linked`, beyond the 26-neighbourhood (sparse nodes)
 };
 
 class CloudGrid : public TangentPlaneSource {
@@ -124,6 +126,7 @@ class CloudGrid : public TangentPlaneSource {
   void BuildCells(const Eigen::MatrixX3d& points);
   void FitNodes(const CloudGridOptions& options, const Eigen::MatrixX3d& points);
   void LinkNodes(const CloudGridOptions& options);
+  void LinkSparseNodes(double cos_max, std::vector<std::pair<int, int>>* pairs);
   void FindComponents();
   bool Connected(int a, int b, double cos_max);
   std::int64_t KeyOf(const Eigen::Vector3d& x) const;
