@@ -1,0 +1,105 @@
+// `bespoke draft` and `bespoke resize` as a user runs them: separate
+// processes on files on disk. A body 8 % larger than the shirt's standard
+// size (every measurement the design binds scaled by 1.08) gets a fitted
+// pattern whose bindings and seams match within the report's tolerance;
+// a missing measurement, an unknown design or a malformed file exits 1
+// naming the problem and leaves no output folder behind.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/support/run_command.h"
+#include "tests/support/test_support.h"
+
+#ifndef BESPOKE_BINARY
+#error "BESPOKE_BINARY (the bespoke executable) must be defined by CMake"
+#endif
+
+namespace bespoke {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::Quote;
+using testing::ReadText;
+using testing::RunCommand;
+using testing::TempDir;
+
+testing::CommandResult Bespoke(const std::string& args, const TempDir& dir) {
+  return RunCommand(std::string("'") + BESPOKE_BINARY + "' --quiet " + args, dir.path());
+}
+
+// The measurements the standard draft was made for, from draft.json, times `scale`.
+nlohmann::json ScaledMeasurements(const std::filesystem::path& draft_json, double scale) {
+  const nlohmann::json draft = nlohmann::json::parse(ReadText(draft_json));
+  nlohmann::json measurements = nlohmann::json::array();
+  std::set<std::string> seen;
+  for (const auto& b : draft.at("bindings")) {
+    const std::string name = b.at("measurement");
+    if (!seen.insert(name).second) continue;
+    measurements.push_back({{"name", name}, {"value_mm", scale * b.at("body_mm").get<double>()}, {"flags", {}}});
+  }
+  return {{"format", "bespoke-measurements"}, {"version", 1}, {"units", "mm"}, {"measurements", measurements}};
+}
+
+TEST(ResizeCli, DraftThenFitAShirtToALargerBody) {
+  TempDir dir;
+  const auto draft = Bespoke("draft --design shirt -o " + Quote(dir / "draft"), dir);
+  ASSERT_EQ(draft.exit_code, 0) << draft.err;
+  for (const char* f : {"pattern.json", "pattern.svg", "pattern.dxf", "draft.json"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / "draft" / f)) << f;
+  }
+  std::ofstream(dir / "big.json") << ScaledMeasurements(dir / "draft" / "draft.json", 1.08).dump(1);
+  const auto fit = Bespoke("resize --design shirt --measurements " + Quote(dir / "big.json") +
+                               " --population 40 --generations 30 -o " + Quote(dir / "fit"),
+                           dir);
+  ASSERT_EQ(fit.exit_code, 0) << fit.err;
+  for (const char* f : {"fitted.json", "fitted.svg", "fitted.dxf", "report.json", "pareto_front.csv"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / "fit" / f)) << f;
+  }
+  const nlohmann::json report = nlohmann::json::parse(ReadText(dir / "fit" / "report.json"));
+  const double tolerance_mm = report.at("settings").at("tolerance_mm");
+  ASSERT_FALSE(report.at("measurements").empty());
+  for (const auto& m : report.at("measurements")) {
+    // Each binding reaches the body's value plus the design's ease.
+    EXPECT_NEAR(m.at("achieved_mm").get<double>(),
+                m.at("body_mm").get<double>() + m.at("ease_mm").get<double>(), tolerance_mm)
+        << m.at("binding");
+  }
+  for (const auto& s : report.at("seams")) {
+    EXPECT_LE(std::abs(s.at("mismatch_mm").get<double>()), tolerance_mm) << s.at("seam");
+  }
+  EXPECT_THAT(ReadText(dir / "fit" / "fitted.svg"), HasSubstr("mm\""));  // 1:1 in millimetres
+  EXPECT_THAT(ReadText(dir / "fit" / "fitted.dxf"), HasSubstr("EOF"));
+}
+
+TEST(ResizeCli, BadInputExitsOneNamingTheProblemAndWritesNothing) {
+  TempDir dir;
+  std::ofstream(dir / "empty.json") << R"({"format": "bespoke-measurements", "version": 1, "units": "mm",
+                                          "measurements": []})";
+  auto r = Bespoke("resize --design shirt --measurements " + Quote(dir / "empty.json") + " -o " +
+                       Quote(dir / "a"),
+                   dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("chest_girth"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "a"));
+
+  r = Bespoke("draft --design kilt -o " + Quote(dir / "b"), dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("kilt"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "b"));
+
+  std::ofstream(dir / "broken.json") << "{\"measurements\": [";
+  r = Bespoke("resize --design trousers --measurements " + Quote(dir / "broken.json") + " -o " +
+                  Quote(dir / "c"),
+              dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("broken.json"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "c"));
+}
+
+}  // namespace
+}  // namespace bespoke
