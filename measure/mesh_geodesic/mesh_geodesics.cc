@@ -1,0 +1,313 @@
+#include "measure/mesh_geodesic/mesh_geodesics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "measure/mesh_geodesic/path_projection.h"
+#include "scanners/core/errors.h"
+
+namespace bespoke {
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// True when, for every pair of consecutive samples, a greedy walk over the
+// mesh graph from the first one's nearest vertex towards the second sample
+// ends at the second one's nearest vertex: the flowed path does not jump
+// between parts of the surface that are close in space but apart over the
+// surface (lips, fingers), where the walk would stop on the near side.
+bool OnSurface(const MeshSurface& surface, const Eigen::MatrixX3d& path,
+               std::vector<int>* hints) {
+  auto& h = *hints;
+  surface.NearestVertex(path.row(0).transpose(), &h[0]);  // the flow's hints may be stale
+  for (size_t i = 1; i < h.size(); ++i) {
+    const Eigen::Vector3d x = path.row(static_cast<Eigen::Index>(i)).transpose();
+    surface.NearestVertex(x, &h[i]);
+    int walk = h[i - 1];
+    if (walk == h[i] || surface.NearestVertex(x, &walk) == h[i]) continue;
+    if (std::find(surface.neighbours_begin(h[i]), surface.neighbours_end(h[i]), walk) ==
+        surface.neighbours_end(h[i]))
+      return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void MeshGeodesicsOptions::Check() const {
+  if (window < 3) throw InputError("mesh geodesics: window must be >= 3, got " + std::to_string(window));
+  auto positive = [](double x) { return x > 0 && std::isfinite(x); };
+  if (!(band_edges >= 0) || !std::isfinite(band_edges))
+    throw InputError("mesh geodesics: band_edges must be >= 0");
+  if (!(tie_edges >= 0) || !std::isfinite(tie_edges))
+    throw InputError("mesh geodesics: tie_edges must be >= 0");
+  if (flow_iterations < 1) throw InputError("mesh geodesics: flow_iterations must be >= 1");
+  if (!positive(flow_tolerance_edges))
+    throw InputError("mesh geodesics: flow_tolerance_edges must be > 0");
+  if (!(replan_edges >= 0) || !std::isfinite(replan_edges))
+    throw InputError("mesh geodesics: replan_edges must be >= 0");
+}
+
+MeshGeodesics::MeshGeodesics(const MeshGeodesicsOptions& options, const MeshSurface& surface,
+                             int source)
+    : options_(options), surface_(surface), source_(source) {
+  options_.Check();
+  const int n = surface.num_vertices();
+  if (source < 0 || source >= n)
+    throw InputError(surface.name(), "source vertex " + std::to_string(source) +
+                                         " is out of range (the mesh has " + std::to_string(n) +
+                                         " vertices)");
+  if (!surface.used(source))
+    throw InputError(surface.name(), "source vertex " + std::to_string(source) +
+                                         " is used by no face");
+  const double edge = surface.mean_edge_length();
+  flow_.max_iterations = options_.flow_iterations;
+  flow_.tolerance_mm = options_.flow_tolerance_edges * edge;
+  flow_.replan_distance_mm = options_.replan_edges * edge;
+  const auto size = static_cast<size_t>(n);
+  offset_.assign(size, kInf);
+  projected_.assign(size, kInf);
+  bound_.assign(size, kInf);
+  parent_.assign(size, -1);
+  start_.assign(size, 0);
+  stamp_.assign(size, -1);
+  settled_.assign(size, 0);
+  tangent_.assign(size, Eigen::Vector3d::Zero());
+  windows_.resize(size);
+  open_.resize(size);
+  for (int v = 0; v < n; ++v)
+    open_[static_cast<size_t>(v)] = static_cast<int>(surface.neighbours_end(v) - surface.neighbours_begin(v));
+  Sample s;
+  s.point = surface.position(source);
+  s.hint = source;
+  int hint = source;
+  if (!surface.PlaneAt(s.point, &hint, &s.plane)) s.plane.normal.setZero();
+  windows_[size_t(source)].push_back(s);
+  live_samples_ = 1;
+  offset_[size_t(source)] = projected_[size_t(source)] = bound_[size_t(source)] = 0;
+  settled_[size_t(source)] = 1;
+  for (const int* u = surface.neighbours_begin(source); u != surface.neighbours_end(source); ++u)
+    --open_[static_cast<size_t>(*u)];
+  stats_.settled = 1;
+  front_.push_back(source);
+  r_max_ = options_.band_edges * edge;
+  min_held_ = kInf;
+}
+
+MeshGeodesics::Choice MeshGeodesics::ChooseParent(int v) const {
+  const Eigen::Vector3d site = surface_.position(v);
+  struct Candidate {
+    int vertex;
+    double predicted, cosine;
+  };
+  Candidate found[64];
+  int count = 0;
+  double best = kInf;
+  for (const int* l = surface_.neighbours_begin(v); l != surface_.neighbours_end(v) && count < 64; ++l) {
+    const int u = *l;
+    if (!settled(u)) continue;
+    const Eigen::Vector3d e = site - surface_.position(u);
+    const double length = e.norm();
+    const Eigen::Vector3d& t = tangent_[static_cast<size_t>(u)];
+    Candidate c{u, offset_[size_t(u)] + length, 1.0};
+    if (t.squaredNorm() > 0 && length > 0) {
+      // Distance from a virtual source offset_[u] behind u along its tangent,
+      // developed into u's tangent plane (exact on a plane).
+      const double along = t.dot(e);
+      const Eigen::Vector3d& n = surface_.normal(u);
+      Eigen::Vector3d lateral = e - along * t;
+      lateral -= n * n.dot(lateral);
+      c.predicted = std::hypot(offset_[size_t(u)] + along, lateral.norm());
+      c.cosine = along / length;
+    }
+    best = std::min(best, c.predicted);
+    found[count++] = c;
+  }
+  Choice choice;
+  double best_cosine = -kInf;
+  const double tie = options_.tie_edges * surface_.mean_edge_length();
+  for (int i = 0; i < count; ++i) {
+    if (found[i].predicted > best + tie || found[i].cosine <= best_cosine) continue;
+    best_cosine = found[i].cosine;
+    choice.parent = found[i].vertex;
+    choice.estimate = found[i].predicted;
+  }
+  return choice;
+}
+
+void MeshGeodesics::Release(int v) {
+  if (options_.keep_paths) return;
+  auto& w = windows_[static_cast<size_t>(v)];
+  live_samples_ -= static_cast<std::int64_t>(w.size());
+  std::vector<Sample>().swap(w);
+}
+
+void MeshGeodesics::Settle(int v, int parent) {
+  const std::vector<Sample>& pw = windows_[static_cast<size_t>(parent)];
+  const int k = static_cast<int>(pw.size());
+  const int drop = options_.whole_path ? 0 : std::max(0, k + 1 - options_.window);
+  const int m = k + 1 - drop;
+  path_.resize(m, 3);
+  hints_.resize(static_cast<size_t>(m));
+  planes_.resize(static_cast<size_t>(m));
+  for (int i = 0; i < m - 1; ++i) {
+    const Sample& s = pw[static_cast<size_t>(drop + i)];
+    path_.row(i) = s.point.transpose();
+    hints_[size_t(i)] = s.hint;
+    planes_[size_t(i)] = s.plane;
+  }
+  path_.row(m - 1) = surface_.position(v).transpose();
+  hints_[size_t(m - 1)] = v;
+  planes_[size_t(m - 1)].normal.setZero();
+  // Flow the window; when the flow leaves the surface or cuts across a gap
+  // between parts of it (lips, eyelids, fingers), flow only the last half,
+  // quarter, ... of it; if even 3 samples fail, keep the inherited path.
+  for (int tail = m; tail >= 3; tail = tail > 3 ? std::max(3, tail / 2) : 0) {
+    Eigen::MatrixX3d part = path_.bottomRows(tail);
+    std::vector<int> part_hints(hints_.end() - tail, hints_.end());
+    std::vector<TangentPlane> part_planes(planes_.end() - tail, planes_.end());
+    const CurvatureFlowReport report = FlowPolyline(flow_, surface_, &part, &part_hints, &part_planes);
+    ++stats_.flows;
+    stats_.flow_iterations += report.iterations;
+    if (!report.converged) ++stats_.unconverged;
+    if (report.samples_without_plane == 0 && OnSurface(surface_, part, &part_hints)) {
+      path_.bottomRows(tail) = part;
+      std::copy(part_hints.begin(), part_hints.end(), hints_.end() - tail);
+      std::copy(part_planes.begin(), part_planes.end(), planes_.end() - tail);
+      break;
+    }
+    ++stats_.held_samples;
+  }
+  FillMissingPlanes(surface_, path_, &hints_, &planes_);
+  std::vector<Sample> window(static_cast<size_t>(m));
+  const Sample& first = pw[static_cast<size_t>(drop)];
+  double arc = first.arc;
+  for (int i = 0; i < m; ++i) {
+    Sample& s = window[size_t(i)];
+    s.point = path_.row(i).transpose();
+    s.hint = hints_[size_t(i)];
+    s.plane = planes_[size_t(i)];
+    if (i > 0) arc += (path_.row(i) - path_.row(i - 1)).norm();
+    s.arc = arc;
+  }
+  window[0].projected = first.projected;
+  if (options_.project) {
+    std::vector<int> hints = hints_;
+    const Eigen::Vector3d* before = drop > 0 ? &pw[static_cast<size_t>(drop - 1)].point : nullptr;
+    const ProjectedPath proj = ProjectPolyline(surface_, path_, &hints, before, false);
+    stats_.projection_fallbacks += proj.fallbacks;
+    for (int i = 1; i < m; ++i) window[size_t(i)].projected = first.projected + proj.cumulative[size_t(i)];
+  }
+  // Eq 3.20-3.24: the kink left at the held first sample of the window.
+  double bound = bound_[size_t(parent)];
+  if (drop > 0 && m >= 2) {
+    const Eigen::Vector3d& n = first.plane.normal;
+    Eigen::Vector3d in = first.point - pw[static_cast<size_t>(drop - 1)].point;
+    Eigen::Vector3d out = window[1].point - first.point;
+    if (n.squaredNorm() > 0) {
+      in -= n.dot(in) / n.squaredNorm() * n;
+      out -= n.dot(out) / n.squaredNorm() * n;
+    }
+    const double length = window.back().arc - first.arc;
+    const double sine = in.norm() > 0 && out.norm() > 0 ? in.cross(out).norm() / (in.norm() * out.norm()) : 0;
+    const double y_max = 0.5 * length * sine;
+    bound += std::sqrt(length * length + 4 * y_max * y_max) - length;
+  }
+  const size_t at = static_cast<size_t>(v);
+  parent_[at] = parent;
+  start_[at] = start_[size_t(parent)] + drop;
+  offset_[at] = window.back().arc;
+  projected_[at] = options_.project ? window.back().projected : kInf;
+  bound_[at] = options_.whole_path ? 0 : bound;
+  Eigen::Vector3d t = (path_.row(m - 1) - path_.row(m - 2)).transpose();
+  const Eigen::Vector3d& normal = surface_.normal(v);
+  t -= normal * normal.dot(t);
+  tangent_[at] = t.norm() > 0 ? t.normalized() : Eigen::Vector3d::Zero();
+  live_samples_ += m;
+  stats_.peak_window_samples = std::max(stats_.peak_window_samples, live_samples_);
+  windows_[at] = std::move(window);
+  settled_[at] = 1;
+  ++stats_.settled;
+  for (const int* u = surface_.neighbours_begin(v); u != surface_.neighbours_end(v); ++u)
+    if (--open_[static_cast<size_t>(*u)] == 0 && settled(*u)) Release(*u);
+  if (open_[at] == 0) Release(v);
+}
+
+void MeshGeodesics::Run(int target, Progress* progress) {
+  if (target >= surface_.num_vertices()) throw InputError("mesh geodesics: target vertex out of range");
+  if (done_ || (target >= 0 && settled(target))) return;
+  const double band = options_.band_edges * surface_.mean_edge_length();
+  ProgressBegin(progress, "propagating mesh geodesics", surface_.num_vertices());
+  std::int64_t reported = stats_.settled;
+  std::vector<int> wave;
+  while (!(target >= 0 && settled(target))) {
+    if (front_.empty()) {  // W and W' are exhausted: widen r_max, expand W_next
+      if (next_.empty()) {
+        done_ = true;
+        break;
+      }
+      front_.swap(next_);
+      next_.clear();
+      ++stats_.rounds;
+      r_max_ = std::max(r_max_, min_held_) + band;
+      min_held_ = kInf;
+    }
+    wave.clear();
+    wave.swap(front_);  // W; newly settled vertices go to W' (front_)
+    for (const int c : wave) {
+      bool held = false;
+      for (const int* l = surface_.neighbours_begin(c); l != surface_.neighbours_end(c); ++l) {
+        if (settled(*l)) continue;
+        const Choice choice = ChooseParent(*l);
+        if (choice.estimate <= r_max_) {
+          Settle(*l, choice.parent);
+          front_.push_back(*l);
+        } else {
+          held = true;
+          min_held_ = std::min(min_held_, choice.estimate);
+        }
+      }
+      if (held && stamp_[size_t(c)] != stats_.rounds) {
+        stamp_[size_t(c)] = static_cast<int>(stats_.rounds);
+        next_.push_back(c);
+      }
+    }
+    if (stats_.settled - reported >= 4096) {
+      reported = stats_.settled;
+      ProgressUpdate(progress, stats_.settled);
+    }
+  }
+  ProgressEnd(progress);
+}
+
+Eigen::MatrixX3d MeshGeodesics::Path(int v, std::vector<int>* hints) const {
+  if (v < 0 || v >= surface_.num_vertices() || !settled(v))
+    throw InputError("mesh geodesics: no path to vertex " + std::to_string(v));
+  if (!options_.keep_paths) throw InputError("mesh geodesics: paths were not kept (keep_paths)");
+  std::vector<std::pair<int, int>> chunks;  // (vertex, samples taken from its window)
+  chunks.emplace_back(v, static_cast<int>(windows_[size_t(v)].size()));
+  int need = start_[size_t(v)];
+  for (int cur = parent_[size_t(v)]; need > 0; cur = parent_[size_t(cur)]) {
+    BESPOKE_CHECK(cur >= 0, "broken parent chain");
+    const int take = need - start_[size_t(cur)];
+    BESPOKE_CHECK(take >= 0 && take <= static_cast<int>(windows_[size_t(cur)].size()),
+                  "inconsistent window chain");
+    chunks.emplace_back(cur, take);
+    need = start_[size_t(cur)];
+  }
+  Eigen::Index total = 0;
+  for (const auto& chunk : chunks) total += chunk.second;
+  Eigen::MatrixX3d out(total, 3);
+  if (hints) hints->resize(static_cast<size_t>(total));
+  Eigen::Index row = 0;
+  for (auto it = chunks.rbegin(); it != chunks.rend(); ++it)
+    for (int i = 0; i < it->second; ++i, ++row) {
+      const Sample& s = windows_[size_t(it->first)][size_t(i)];
+      out.row(row) = s.point.transpose();
+      if (hints) (*hints)[size_t(row)] = s.hint;
+    }
+  return out;
+}
+
+}  // namespace bespoke
