@@ -3,7 +3,6 @@
 // frame in mm with a report; bad files and options give exit code 1 and
 // leave no output behind.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -13,6 +12,7 @@
 #include "scanners/core/json_io.h"
 #include "scanners/io/scan_io.h"
 #include "tests/support/synthetic_scene.h"
+#include "tests/support/run_command.h"
 #include "tests/support/test_support.h"
 
 #ifndef BESPOKE_BINARY
@@ -24,31 +24,13 @@ namespace {
 
 using testing::TempDir;
 
-struct ProcessResult {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-std::string Slurp(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using ProcessResult = testing::CommandResult;
 
 ProcessResult Clean(const TempDir& dir, const std::string& args) {
-  const auto out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command = std::string("'") + BESPOKE_BINARY + "' clean " + args + " > '" +
-                              out.string() + "' 2> '" + err.string() + "'";
-  const int status = std::system(command.c_str());
-  ProcessResult run;
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  run.out = Slurp(out);
-  run.err = Slurp(err);
-  return run;
+  return testing::RunCommand(std::string("'") + BESPOKE_BINARY + "' clean " + args, dir.path());
 }
 
-std::string Q(const std::filesystem::path& file) { return "'" + file.string() + "'"; }
+std::string Q(const std::filesystem::path& file) { return testing::Quote(file); }
 
 TEST(CleanCli, ScanInMetresComesOutInTheBodyFrame) {
   TempDir dir;
@@ -116,7 +98,7 @@ TEST(CleanCli, BadOptionsExitOne) {
   PointCloud tiny;
   tiny.points = Eigen::MatrixX3d::Random(2000, 3) * 800.0;
   WriteScan(WriteOptions{}, tiny, dir / "scan.ply");
-  for (const std::string args : {" -o " + Q(dir / "out.ply") + " --voxel-mm 0",
+  for (const std::string& args : {" -o " + Q(dir / "out.ply") + " --voxel-mm 0",
                                  " -o " + Q(dir / "out.txt"),
                                  " -o " + Q(dir / "out.ply") + " --units furlongs",
                                  " -o " + Q(dir / "out.ply") + " --report " + Q(dir / "r.txt"),

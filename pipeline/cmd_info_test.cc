@@ -4,7 +4,6 @@
 // stderr; a valid scan gives exit 0 with its facts on stdout (text and JSON).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -15,6 +14,7 @@
 
 #include "scanners/io/malformed_corpus.h"
 #include "scanners/io/scan_io.h"
+#include "tests/support/run_command.h"
 #include "tests/support/test_support.h"
 
 #ifndef BESPOKE_BINARY
@@ -26,32 +26,14 @@ namespace {
 
 using testing::TempDir;
 
-struct ProcessResult {
-  int exit_code = -1;
-  std::string out, err;
-};
+using ProcessResult = testing::CommandResult;
 
-std::string Slurp(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-// Runs `bespoke info <args>` with stdout and stderr captured to files.
+// Runs `bespoke info <args>` with stdout and stderr captured.
 ProcessResult Info(const TempDir& dir, const std::string& args) {
-  const auto out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command = std::string("'") + BESPOKE_BINARY + "' info " + args + " > '" +
-                              out.string() + "' 2> '" + err.string() + "'";
-  const int status = std::system(command.c_str());
-  ProcessResult run;
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  run.out = Slurp(out);
-  run.err = Slurp(err);
-  return run;
+  return testing::RunCommand(std::string("'") + BESPOKE_BINARY + "' info " + args, dir.path());
 }
 
-std::string Quoted(const std::filesystem::path& file) { return "'" + file.string() + "'"; }
+std::string Quoted(const std::filesystem::path& file) { return testing::Quote(file); }
 
 void WriteFile(const std::filesystem::path& file, const std::string& bytes) {
   std::ofstream(file, std::ios::binary) << bytes;

@@ -2,7 +2,6 @@
 // A valid body gives exit 0 and every promised file; bad input gives exit 1
 // with the problem (and the file) named on stderr and no scan written.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -11,6 +10,7 @@
 #include "scanners/body/parametric_body.h"
 #include "scanners/core/json_io.h"
 #include "scanners/io/scan_io.h"
+#include "tests/support/run_command.h"
 #include "tests/support/test_support.h"
 
 #ifndef BESPOKE_BINARY
@@ -22,26 +22,13 @@ namespace {
 
 using testing::TempDir;
 
-struct ProcessResult {
-  int exit_code = -1;
-  std::string err;
-};
+using ProcessResult = testing::CommandResult;
 
 ProcessResult ScanSim(const TempDir& dir, const std::string& args) {
-  const auto err = dir / "stderr.txt";
-  const std::string command = std::string("'") + BESPOKE_BINARY + "' -q scan-sim " + args + " > /dev/null 2> '" +
-                              err.string() + "'";
-  const int status = std::system(command.c_str());
-  ProcessResult run;
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  std::ifstream in(err);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  run.err = ss.str();
-  return run;
+  return testing::RunCommand(std::string("'") + BESPOKE_BINARY + "' -q scan-sim " + args, dir.path());
 }
 
-std::string Q(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+std::string Q(const std::filesystem::path& p) { return testing::Quote(p); }
 
 // A small body (coarse mesh) and a truth file with its landmarks.
 void WriteBody(const TempDir& dir) {
