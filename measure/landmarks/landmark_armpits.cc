@@ -1,0 +1,169 @@
+// Armpits: where the arm's section joins the trunk's (A-pose: the arm's own
+// piece beside the trunk disappears; T-pose: the trunk's section suddenly
+// reaches along the arm), and each arm's centre line for landmark_arms.cc.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "measure/landmarks/landmark_context.h"
+#include "scanners/core/errors.h"
+
+namespace bespoke::landmarks {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Closest pair (xy) between two row sets: their rows and distance.
+double ClosestPair(const Context& c, const std::vector<int>& a, const std::vector<int>& b, int* ra, int* rb) {
+  double best = kInf;
+  for (int i : a) {
+    for (int j : b) {
+      const double d = (c.points.row(i).head<2>() - c.points.row(j).head<2>()).squaredNorm();
+      if (d < best) best = d, *ra = i, *rb = j;
+    }
+  }
+  return std::sqrt(best);
+}
+
+// The lateral piece of slice `s` (not trunk, on the side) nearest `centre`
+// (xy) within `radius`; -1 when none.
+int LateralPieceNear(const Context& c, const Slice& s, int sign, const Eigen::Vector2d& centre, double radius) {
+  const std::vector<int> trunk = c.TrunkPieces(s);
+  int best = -1;
+  double best_d = radius;
+  for (size_t i = 0; i < s.pieces.size(); ++i) {
+    if (std::find(trunk.begin(), trunk.end(), static_cast<int>(i)) != trunk.end()) continue;
+    const Piece& p = s.pieces[i];
+    if (sign * p.centroid.x() <= 0 || p.rows.size() < 4) continue;
+    const double d = (p.centroid - centre).norm();
+    if (d < best_d) best_d = d, best = static_cast<int>(i);
+  }
+  return best;
+}
+
+// Lateral extent of the trunk's section on one side (x' = sign * x).
+double Extent(const Context& c, const Slice& s, int sign) {
+  double ext = -kInf;
+  for (int r : c.TrunkRows(s)) ext = std::max(ext, sign * c.points(r, 0));
+  return ext;
+}
+
+// A-pose: follows the arm's piece down from slice k, recording centroids.
+void TrackArmDown(const Context& c, int k, int piece, int sign, ArmInfo* arm) {
+  Eigen::Vector2d centre = c.slices[static_cast<size_t>(k)].pieces[static_cast<size_t>(piece)].centroid;
+  int lost = 0;
+  for (int s = k; s >= 0 && lost < 4; --s) {
+    const Slice& slice = c.slices[static_cast<size_t>(s)];
+    const int i = LateralPieceNear(c, slice, sign, centre, 60);
+    if (i < 0) { ++lost; continue; }
+    lost = 0;
+    const Piece& p = slice.pieces[static_cast<size_t>(i)];
+    centre = p.centroid;
+    arm->centre_line.emplace_back(centre.x(), centre.y(), slice.z);
+    arm->rows.insert(arm->rows.end(), p.rows.begin(), p.rows.end());
+  }
+}
+
+// T-pose: the arm is every point beyond the trunk's side above the armpit;
+// its centre line from vertical (x = const) bands 10 mm apart.
+void CollectTPoseArm(const Context& c, double side_x, double armpit_z, int sign, ArmInfo* arm) {
+  std::vector<std::vector<int>> bands;
+  for (Eigen::Index r = 0; r < c.points.rows(); ++r) {
+    const double x = sign * c.points(r, 0);
+    if (x < side_x + 5 || c.points(r, 2) < armpit_z - 40) continue;
+    arm->rows.push_back(static_cast<int>(r));
+    const size_t b = static_cast<size_t>((x - side_x) / 10);
+    if (bands.size() <= b) bands.resize(b + 1);
+    bands[b].push_back(static_cast<int>(r));
+  }
+  for (const auto& band : bands) {
+    if (band.size() < 4) continue;
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int r : band) sum += c.P(r);
+    arm->centre_line.push_back(sum / static_cast<double>(band.size()));
+  }
+}
+
+void FindArmpit(Context* c, int sign) {
+  ArmInfo& arm = c->arm[sign > 0 ? 0 : 1];
+  const std::string name = "armpit" + Side(sign);
+  const double h = c->crown_z;
+  const int top = SliceAt(c->slices, 0.84 * h), bottom = SliceAt(c->slices, c->crotch_z + 0.15 * h);
+  std::vector<double> ext(c->slices.size(), -kInf);
+  for (int s = bottom; s <= top; ++s) ext[static_cast<size_t>(s)] = Extent(*c, c->slices[static_cast<size_t>(s)], sign);
+  // Descending, the first slice whose trunk extent drops 30 mm below the
+  // widest of the 60 mm above it, and stays there for two more slices.
+  int k = -1;
+  for (int s = top - 1; s >= bottom + 2 && k < 0; --s) {
+    double above = -kInf;
+    for (int t = s + 1; t <= std::min(top, s + 12); ++t) above = std::max(above, ext[static_cast<size_t>(t)]);
+    bool drop = true;
+    for (int t = s; t >= s - 2; --t) drop &= ext[static_cast<size_t>(t)] < above - 30;
+    if (drop) k = s;
+  }
+  if (k < 0) {
+    // No gap between arm and trunk anywhere: the arm touches the torso.
+    arm.touching = true;
+    const double z = c->crotch_z + 0.56 * (h - c->crotch_z);
+    const Slice& s = c->At(z);
+    const std::vector<int> rows = c->TrunkRows(s);
+    if (rows.empty()) { c->Missing(name, "the arm touches the torso and no trunk section was found"); return; }
+    int side = rows.front();
+    for (int r : rows) if (sign * c->points(r, 0) > sign * c->points(side, 0)) side = r;
+    arm.found = true;
+    arm.armpit_z = z;
+    arm.armpit = c->P(side);
+    c->Put(name, arm.armpit, 0.3, "proportion_arm_touching", {"arm_touching_torso"});
+    return;
+  }
+  const Slice& below = c->slices[static_cast<size_t>(k)];
+  const std::vector<int> trunk = c->TrunkRows(below);
+  const Eigen::Vector2d trunk_side(sign * ext[static_cast<size_t>(k)], 0);
+  int piece = LateralPieceNear(*c, below, sign, trunk_side, 250);
+  if (piece >= 0 && sign * below.pieces[static_cast<size_t>(piece)].lo.x() * 1.0 < ext[static_cast<size_t>(k)] - 40) piece = -1;
+  arm.found = true;
+  if (piece >= 0) {
+    // A-pose. The sections join between slice k and the one above; the
+    // armpit is the trunk's side there, facing the arm (a hole in the
+    // armpit can only raise the level where the pieces join, by its size).
+    int ra = -1, rb = -1;
+    ClosestPair(*c, trunk, below.pieces[static_cast<size_t>(piece)].rows, &ra, &rb);
+    const double apex = below.z + 0.5 * c->step;
+    const Eigen::Vector2d mid = c->points.row(ra).head<2>().transpose();
+    arm.t_pose = false;
+    arm.armpit_z = apex;
+    arm.armpit = Eigen::Vector3d(mid.x(), mid.y(), apex);
+    c->Put(name, arm.armpit, 0.85, "arm_trunk_gap_apex");
+    TrackArmDown(*c, k, piece, sign, &arm);
+    // Above the armpit the arm is part of the trunk's section: its points
+    // beyond the armpit (the deltoid) belong to the arm too.
+    for (int s = k + 1; s < static_cast<int>(c->slices.size()) && c->slices[static_cast<size_t>(s)].z < apex + 160; ++s) {
+      for (int r : c->slices[static_cast<size_t>(s)].rows) {
+        if (sign * c->points(r, 0) > sign * arm.armpit.x() + 5) arm.rows.push_back(r);
+      }
+    }
+  } else {
+    // T-pose: the arm's underside; its bottom meets the trunk's side.
+    arm.t_pose = true;
+    const double side_x = ext[static_cast<size_t>(k)];
+    const Slice& above = c->slices[static_cast<size_t>(std::min<int>(k + 1, static_cast<int>(c->slices.size()) - 1))];
+    double y = 0;
+    int n = 0;
+    for (int r : above.rows) {
+      const double x = sign * c->points(r, 0);
+      if (x > side_x - 10 && x < side_x + 30) y += c->points(r, 1), ++n;
+    }
+    arm.armpit_z = below.z + 0.5 * c->step;
+    arm.armpit = Eigen::Vector3d(sign * side_x, n ? y / n : 0.0, arm.armpit_z);
+    c->Put(name, arm.armpit, 0.75, "arm_underside_meets_trunk");
+    CollectTPoseArm(*c, side_x, arm.armpit_z, sign, &arm);
+  }
+}
+
+}  // namespace
+
+void FindArmpits(Context* c) {
+  for (int sign : {+1, -1}) FindArmpit(c, sign);
+}
+
+}  // namespace bespoke::landmarks

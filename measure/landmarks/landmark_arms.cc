@@ -1,0 +1,133 @@
+// Arms: wrist (narrowest section before the hand), elbow and upper-arm
+// points along the arm's principal axis.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Eigenvalues>
+
+#include "measure/landmarks/landmark_context.h"
+#include "scanners/core/errors.h"
+
+namespace bespoke::landmarks {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Elbow position as a share of the shoulder-point-to-wrist distance along
+// the arm: upper arm (acromion-radiale) about 0.186 and forearm
+// (radiale-stylion) about 0.146 of stature in adult surveys (ISO 7250-1
+// style data), so 0.56; the scan has no reliable elbow shape cue when the
+// arm is straight.
+constexpr double kElbowShare = 0.56;
+
+struct ArmFrame {
+  Eigen::Vector3d origin, axis;  // origin: the shoulder point (or armpit); axis: outwards along the arm
+  std::vector<int> rows;
+  std::vector<double> t;         // (p - origin) . axis per row
+  double length = 0;             // max t
+};
+
+bool MakeFrame(const Context& c, const ArmInfo& arm, const Eigen::Vector3d& origin, ArmFrame* f) {
+  if (arm.centre_line.size() < 6 || arm.rows.empty()) return false;
+  Eigen::MatrixX3d line(static_cast<Eigen::Index>(arm.centre_line.size()), 3);
+  for (size_t i = 0; i < arm.centre_line.size(); ++i) line.row(static_cast<Eigen::Index>(i)) = arm.centre_line[i];
+  const Eigen::RowVector3d mean = line.colwise().mean();
+  const Eigen::Matrix3d cov = (line.rowwise() - mean).transpose() * (line.rowwise() - mean);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  f->axis = eig.eigenvectors().col(2);
+  if (f->axis.dot(arm.centre_line.back() - arm.centre_line.front()) < 0) f->axis = -f->axis;
+  f->origin = origin;
+  f->rows = arm.rows;
+  std::sort(f->rows.begin(), f->rows.end());
+  f->rows.erase(std::unique(f->rows.begin(), f->rows.end()), f->rows.end());
+  for (int r : f->rows) {
+    f->t.push_back((c.P(r) - origin).dot(f->axis));
+    f->length = std::max(f->length, f->t.back());
+  }
+  return true;
+}
+
+// Largest distance from the centroid, across the axis, of the rows within
+// `half` of station t: the section's half-size (mm); inf when too few.
+double SectionRadius(const Context& c, const ArmFrame& f, double t, double half) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  std::vector<Eigen::Vector3d> near;
+  for (size_t i = 0; i < f.rows.size(); ++i) {
+    if (std::abs(f.t[i] - t) > half) continue;
+    Eigen::Vector3d p = c.P(f.rows[i]);
+    p -= p.dot(f.axis) * f.axis;
+    near.push_back(p);
+    sum += p;
+  }
+  if (near.size() < 8) return kInf;
+  const Eigen::Vector3d centre = sum / static_cast<double>(near.size());
+  double r = 0;
+  for (const auto& p : near) r = std::max(r, (p - centre).norm());
+  return r;
+}
+
+// The row in the slab |t - t0| < half maximising `score`; -1 when empty.
+template <typename Score>
+int BestInSlab(const Context& c, const ArmFrame& f, double t0, double half, Score score) {
+  int best = -1;
+  double best_score = -kInf;
+  for (size_t i = 0; i < f.rows.size(); ++i) {
+    if (std::abs(f.t[i] - t0) > half) continue;
+    const double s = score(c.P(f.rows[i]));
+    if (s > best_score) best_score = s, best = f.rows[i];
+  }
+  return best;
+}
+
+void FindArm(Context* c, int sign) {
+  const ArmInfo& arm = c->arm[sign > 0 ? 0 : 1];
+  const std::string side = Side(sign);
+  const bool has_shoulder = c->Has("shoulder" + side);
+  ArmFrame f;
+  if (!arm.found || !MakeFrame(*c, arm, has_shoulder ? c->Pos("shoulder" + side) : arm.armpit, &f)) {
+    for (const char* n : {"upper_arm", "elbow", "wrist"}) {
+      c->Missing(n + side, arm.touching ? "the arm touches the torso" : "the arm was not found");
+    }
+    return;
+  }
+  std::vector<std::string> flags;
+  double confidence = 0.75;
+  if (f.length < 0.3 * c->crown_z) flags.push_back("arm_incomplete"), confidence = 0.4;
+  if (arm.touching) flags.push_back("arm_touching_torso"), confidence = 0.3;
+  // Wrist: the narrowest section between 260 mm and 90 mm from the arm's end
+  // (the hand is wider and flat).
+  double wrist_t = -1, best = kInf;
+  for (double t = f.length - 260; t <= f.length - 90; t += 5) {
+    const double r = SectionRadius(*c, f, t, 4);
+    if (r < best) best = r, wrist_t = t;
+  }
+  if (wrist_t < 0) {
+    for (const char* n : {"upper_arm", "elbow", "wrist"}) c->Missing(n + side, "the forearm was not found");
+    return;
+  }
+  auto back = [](const Eigen::Vector3d& p) { return -p.y(); };
+  const int wrist = BestInSlab(*c, f, wrist_t, 10, back);
+  if (wrist >= 0) c->Put("wrist" + side, c->P(wrist), confidence, "arm_section_min_back", flags);
+  const double elbow_t = kElbowShare * wrist_t;
+  const int elbow = BestInSlab(*c, f, elbow_t, 15, back);
+  if (elbow < 0) {
+    c->Missing("elbow" + side, "no arm points at the elbow");
+    c->Missing("upper_arm" + side, "needs the elbow");
+    return;
+  }
+  c->Put("elbow" + side, c->P(elbow), confidence * 0.8, "arm_length_share_back", flags);
+  const double upper_t = 0.5 * (c->P(elbow) - f.origin).dot(f.axis);
+  const Eigen::Vector3d lateral = Eigen::Vector3d(sign, 0, 0);
+  const Eigen::Vector3d outward = (lateral - lateral.dot(f.axis) * f.axis).normalized();
+  const int upper = BestInSlab(*c, f, upper_t, 10, [&](const Eigen::Vector3d& p) { return p.dot(outward); });
+  if (upper >= 0) c->Put("upper_arm" + side, c->P(upper), confidence * 0.8, "mid_upper_arm_outside", flags);
+  else c->Missing("upper_arm" + side, "no arm points midway to the elbow");
+}
+
+}  // namespace
+
+void FindArms(Context* c) {
+  for (int sign : {+1, -1}) FindArm(c, sign);
+}
+
+}  // namespace bespoke::landmarks

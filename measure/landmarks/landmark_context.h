@@ -1,0 +1,84 @@
+// The landmark detector's working state, shared by its stages (internal to
+// measure/landmarks; the public interface is landmarks.h).
+//
+// Stages, in order (each in its own .cc): trunk levels and the crotch
+// (landmark_trunk.cc), armpits and axilla folds (landmark_armpits.cc), neck
+// and shoulders (landmark_neck.cc), arms (landmark_arms.cc), legs
+// (landmark_legs.cc). A stage reads what earlier ones found from `found`.
+// Sides: a paired stage runs once per side with `sign` = +1 for the right
+// (+x) and -1 for the left; it works in x' = sign * x.
+#ifndef BESPOKE_MEASURE_LANDMARKS_LANDMARK_CONTEXT_H_
+#define BESPOKE_MEASURE_LANDMARKS_LANDMARK_CONTEXT_H_
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "measure/geodesic/point_index.h"
+#include "measure/landmarks/landmark_slices.h"
+#include "measure/landmarks/landmarks.h"
+
+namespace bespoke::landmarks {
+
+// What the armpit stage learnt about one arm (used by later stages).
+struct ArmInfo {
+  bool found = false;
+  bool t_pose = false;         // the arm leaves the trunk above the armpit, not beside it
+  bool touching = false;       // no gap between arm and trunk was seen
+  double armpit_z = 0;         // height where arm and trunk sections join (mm)
+  Eigen::Vector3d armpit = Eigen::Vector3d::Zero();
+  // Centre line of the arm from the armpit outwards (body frame, mm).
+  std::vector<Eigen::Vector3d> centre_line;
+  std::vector<int> rows;       // cloud rows of the arm below/beyond the armpit (may repeat)
+};
+
+struct Context {
+  const Eigen::MatrixX3d& points;
+  std::unique_ptr<PointIndex> index;
+  std::vector<Slice> slices;
+  double step = 5;
+  double crown_z = 0;      // stature (mm)
+  double crotch_z = 0;
+  ArmInfo arm[2];          // [0] right, [1] left
+  LandmarkSet found;
+
+  explicit Context(const Eigen::MatrixX3d& p) : points(p) {}
+  Eigen::Vector3d P(int row) const { return points.row(row).transpose(); }
+  const Slice& At(double z) const { return slices[static_cast<size_t>(SliceAt(slices, z))]; }
+
+  // Records a landmark; flags "in_hole" when no scan point lies within
+  // 12 mm (the position was interpolated over a hole).
+  void Put(const std::string& name, const Eigen::Vector3d& position, double confidence,
+           const std::string& method, std::vector<std::string> flags = {});
+  void Missing(const std::string& name, const std::string& why);
+  bool Has(const std::string& name) const { return found.Has(name); }
+  Eigen::Vector3d Pos(const std::string& name) const { return found.points.at(name).position_mm; }
+
+  // Rows of the trunk in slice `s`: the pieces reaching the body's middle
+  // (|x| < core_mm), which the arms and hands never do.
+  std::vector<int> TrunkRows(const Slice& s, double core_mm = 50) const;
+  // Trunk pieces of slice `s` (indices into s.pieces).
+  std::vector<int> TrunkPieces(const Slice& s, double core_mm = 50) const;
+};
+
+std::string Side(int sign);
+
+// The centre-line point (|x| < half_width_mm) of the trunk at height z, on
+// the front (most forward) or back; false when the slices within 15 mm
+// hold none. `out` gets z exactly.
+bool SeamPoint(const Context& c, double z, bool front, Eigen::Vector3d* out,
+               double half_width_mm = 10);
+// Puts `name` at SeamPoint(z, front), or marks it missing.
+void PutSeam(Context* c, const std::string& name, double z, bool front, double confidence,
+             const std::string& method);  // "_right" for +1, "_left" for -1
+
+void FindCrownAndCrotch(Context* c);
+void FindArmpits(Context* c);
+void FindTrunkLevels(Context* c);
+void FindNeckAndShoulders(Context* c);
+void FindArms(Context* c);
+void FindLegs(Context* c);
+
+}  // namespace bespoke::landmarks
+
+#endif  // BESPOKE_MEASURE_LANDMARKS_LANDMARK_CONTEXT_H_

@@ -1,0 +1,128 @@
+// Legs: thigh, knee, calf and the inside and outside ankle points, from
+// each leg's own piece in the slices below the crotch.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "measure/landmarks/landmark_context.h"
+#include "scanners/core/errors.h"
+
+namespace bespoke::landmarks {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Heights as shares of the crotch height. A standing scan shows no
+// reliable shape cue for the knee joint or the malleoli (the leg's width
+// changes smoothly there), so the levels come from adult proportions: knee
+// (mid-patella) height about 0.285 and crotch height about 0.47 of stature
+// (ISO 7250-1 style survey data) give 0.61; the malleoli lie at about 0.09-0.10.
+constexpr double kKneeShare = 0.615;
+constexpr double kAnkleShare = 0.095;
+
+// The leg's rows per slice (index = slice), tracked from mid-shin up to the
+// crotch and down to the sole; empty where the leg was lost.
+std::vector<std::vector<int>> TrackLeg(const Context& c, int sign) {
+  std::vector<std::vector<int>> leg(c.slices.size());
+  const int start = SliceAt(c.slices, 0.3 * c.crotch_z);
+  const Slice& s0 = c.slices[static_cast<size_t>(start)];
+  int first = -1;
+  for (size_t i = 0; i < s0.pieces.size(); ++i) {
+    const Piece& p = s0.pieces[i];
+    if (sign * p.centroid.x() > 0 && (first < 0 || p.rows.size() > s0.pieces[static_cast<size_t>(first)].rows.size())) {
+      first = static_cast<int>(i);
+    }
+  }
+  if (first < 0) throw InputError("landmarks: no " + std::string(sign > 0 ? "right" : "left") + " leg found");
+  for (int dir : {+1, -1}) {
+    Eigen::Vector2d centre = s0.pieces[static_cast<size_t>(first)].centroid;
+    const int end = dir > 0 ? SliceAt(c.slices, c.crotch_z - c.step) : 0;
+    for (int s = start; dir > 0 ? s <= end : s >= end; s += dir) {
+      const Slice& slice = c.slices[static_cast<size_t>(s)];
+      int best = -1;
+      double best_d = 80;
+      for (size_t i = 0; i < slice.pieces.size(); ++i) {
+        const double d = (slice.pieces[i].centroid - centre).norm();
+        if (d < best_d && slice.pieces[i].rows.size() >= 4) best_d = d, best = static_cast<int>(i);
+      }
+      if (best < 0) continue;
+      centre = slice.pieces[static_cast<size_t>(best)].centroid;
+      leg[static_cast<size_t>(s)] = slice.pieces[static_cast<size_t>(best)].rows;
+    }
+  }
+  return leg;
+}
+
+// The leg row within `half` of height z maximising score; -1 when none.
+template <typename Keep, typename Score>
+int BestNear(const Context& c, const std::vector<std::vector<int>>& leg, double z, double half, Keep keep,
+             Score score) {
+  int best = -1;
+  double best_score = -kInf;
+  for (int s = SliceAt(c.slices, z - half); s <= SliceAt(c.slices, z + half); ++s) {
+    for (int r : leg[static_cast<size_t>(s)]) {
+      const Eigen::Vector3d p = c.P(r);
+      if (std::abs(p.z() - z) > half || !keep(p)) continue;
+      const double v = score(p);
+      if (v > best_score) best_score = v, best = r;
+    }
+  }
+  return best;
+}
+
+void FindLeg(Context* c, int sign) {
+  const std::string side = Side(sign);
+  const auto leg = TrackLeg(*c, sign);
+  auto all = [](const Eigen::Vector3d&) { return true; };
+  // Thigh: 20 mm below the crotch, the outside of the leg.
+  const double thigh_z = c->crotch_z - 20;
+  const int thigh = BestNear(*c, leg, thigh_z, 4, all, [&](const Eigen::Vector3d& p) { return sign * p.x(); });
+  if (thigh >= 0) {
+    Eigen::Vector3d p = c->P(thigh);
+    p.z() = thigh_z;
+    c->Put("thigh" + side, p, 0.8, "below_crotch_outside");
+  } else {
+    c->Missing("thigh" + side, "no leg section below the crotch");
+  }
+  const double knee_z = kKneeShare * c->crotch_z;
+  const int knee = BestNear(*c, leg, knee_z, 15, all, [](const Eigen::Vector3d& p) { return p.y(); });
+  if (knee >= 0) c->Put("knee" + side, c->P(knee), 0.6, "proportion_front_max");
+  else c->Missing("knee" + side, "no leg section at knee height");
+  const double ankle_z = kAnkleShare * c->crotch_z;
+  // The ankle's centre: the leg's section 40 mm higher, above the foot.
+  double ay = 0;
+  int n = 0;
+  for (int r : leg[static_cast<size_t>(SliceAt(c->slices, ankle_z + 40))]) ay += c->points(r, 1), ++n;
+  if (n == 0) {
+    c->Missing("ankle_inside" + side, "no leg section above the ankle");
+    c->Missing("ankle_outside" + side, "no leg section above the ankle");
+  } else {
+    ay /= n;
+    auto near_axis = [&](const Eigen::Vector3d& p) { return std::abs(p.y() - ay) < 30; };
+    const int in = BestNear(*c, leg, ankle_z, 12, near_axis, [&](const Eigen::Vector3d& p) { return -sign * p.x(); });
+    const int out = BestNear(*c, leg, ankle_z, 12, near_axis, [&](const Eigen::Vector3d& p) { return sign * p.x(); });
+    if (in >= 0) c->Put("ankle_inside" + side, c->P(in), 0.6, "proportion_section_inside");
+    else c->Missing("ankle_inside" + side, "no points at the inner ankle");
+    if (out >= 0) c->Put("ankle_outside" + side, c->P(out), 0.6, "proportion_section_outside");
+    else c->Missing("ankle_outside" + side, "no points at the outer ankle");
+  }
+  // Calf: the most backward point of the leg between 30 % and 90 % of the
+  // way from the ankle to the knee.
+  const double lo = ankle_z + 0.3 * (knee_z - ankle_z), hi = ankle_z + 0.9 * (knee_z - ankle_z);
+  const int calf = BestNear(*c, leg, 0.5 * (lo + hi), 0.5 * (hi - lo), all, [](const Eigen::Vector3d& p) { return -p.y(); });
+  if (calf >= 0) c->Put("calf" + side, c->P(calf), 0.75, "leg_back_max");
+  else c->Missing("calf" + side, "no leg section between ankle and knee");
+}
+
+}  // namespace
+
+void FindLegs(Context* c) {
+  for (int sign : {+1, -1}) {
+    try {
+      FindLeg(c, sign);
+    } catch (const InputError& e) {
+      for (const char* n : {"thigh", "knee", "calf", "ankle_inside", "ankle_outside"}) c->Missing(n + Side(sign), e.what());
+    }
+  }
+}
+
+}  // namespace bespoke::landmarks

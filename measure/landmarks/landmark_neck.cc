@@ -1,0 +1,188 @@
+// Neck and shoulders: back neck point (C7), front neck point (jugulare),
+// side neck points, shoulder points (acromion) and the axilla folds.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "measure/landmarks/landmark_context.h"
+#include "scanners/core/errors.h"
+#include "scanners/truth/convex_hull_2d.h"
+
+namespace bespoke::landmarks {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct Neck {
+  double z = 0;      // narrowest section above the shoulders
+  double y = 0;      // its centroid's y
+};
+
+Neck NarrowestNeck(const Context& c, double from_z) {
+  Neck neck;
+  double best = kInf;
+  for (double z = from_z; z < c.crown_z - 0.08 * c.crown_z; z += c.step) {
+    const std::vector<int> rows = c.TrunkRows(c.At(z));
+    if (rows.size() < 10) continue;
+    const double girth = HullPerimeter(c.points, rows);
+    if (girth < best) {
+      best = girth;
+      neck.z = z;
+      double y = 0;
+      for (int r : rows) y += c.points(r, 1);
+      neck.y = y / static_cast<double>(rows.size());
+    }
+  }
+  if (!std::isfinite(best)) throw InputError("landmarks: no neck found above the shoulders");
+  return neck;
+}
+
+// C7: on the back centre line between the armpits and the narrowest neck,
+// where the back profile bends forward most sharply (largest second
+// difference of y over +-15 mm): the base of the neck.
+double BackNeckZ(Context* c, double from_z, double to_z) {
+  std::vector<double> zs, ys;
+  for (double z = from_z; z <= to_z; z += c->step) {
+    Eigen::Vector3d p;
+    if (SeamPoint(*c, z, false, &p)) zs.push_back(z), ys.push_back(p.y());
+  }
+  const int n = static_cast<int>(zs.size()), k = std::max(1, static_cast<int>(std::lround(15 / c->step)));
+  double best = -kInf, best_z = 0.5 * (from_z + to_z);
+  for (int i = k; i + k < n; ++i) {
+    const double bend = ys[static_cast<size_t>(i + k)] - 2 * ys[static_cast<size_t>(i)] + ys[static_cast<size_t>(i - k)];
+    if (bend > best) best = bend, best_z = zs[static_cast<size_t>(i)];
+  }
+  return best_z;
+}
+
+// The shoulder point of one side; false when the arm was not found.
+bool Shoulder(Context* c, int sign, Eigen::Vector3d* out) {
+  const ArmInfo& arm = c->arm[sign > 0 ? 0 : 1];
+  if (!arm.found) return false;
+  const double ax = sign * arm.armpit.x();
+  // The shoulder's coronal plane: mean y of the section 40 mm above the armpit near its side.
+  double yc = 0;
+  int n = 0;
+  for (int r : c->At(arm.armpit_z + 40).rows) {
+    if (std::abs(sign * c->points(r, 0) - ax) < 30) yc += c->points(r, 1), ++n;
+  }
+  if (n == 0) return false;
+  yc /= n;
+  int best = -1;
+  double best_score = -kInf;
+  for (Eigen::Index r = 0; r < c->points.rows(); ++r) {
+    const Eigen::Vector3d p = c->P(static_cast<int>(r));
+    const double x = sign * p.x();
+    if (std::abs(p.y() - yc) > 25 || p.z() < arm.armpit_z + 30 || p.z() > arm.armpit_z + 0.14 * c->crown_z ||
+        x < 0.6 * ax) {
+      continue;
+    }
+    // A-pose: the upper-outer corner (x + z largest; the arm falls away
+    // steeper than 45 deg). T-pose: the top of the shoulder over the armpit.
+    double score;
+    if (arm.t_pose) score = std::abs(x - ax) < 6 ? p.z() : -kInf;
+    else score = x + p.z();
+    if (score > best_score) best_score = score, best = static_cast<int>(r);
+  }
+  if (best < 0 || !std::isfinite(best_score)) return false;
+  *out = c->P(best);
+  return true;
+}
+
+// Side neck point: in the coronal band through the neck, the contour point
+// farthest below the chord from the neck's side (3 % of stature above the
+// back neck point's height) to the shoulder point.
+bool SideNeck(const Context& c, int sign, const Neck& neck, double top_z, const Eigen::Vector3d& acromion,
+              Eigen::Vector3d* out) {
+  double top_x = -kInf;
+  for (int r : c.At(top_z).rows) {
+    if (std::abs(c.points(r, 1) - neck.y) < 10) top_x = std::max(top_x, sign * c.points(r, 0));
+  }
+  if (!std::isfinite(top_x)) return false;
+  const Eigen::Vector2d p1(top_x, top_z), p2(sign * acromion.x(), acromion.z());
+  Eigen::Vector2d down(p2.y() - p1.y(), p1.x() - p2.x());
+  if (down.y() > 0) down = -down;
+  down.normalize();
+  double best = -kInf;
+  for (Eigen::Index r = 0; r < c.points.rows(); ++r) {
+    const Eigen::Vector3d p = c.P(static_cast<int>(r));
+    const double x = sign * p.x();
+    if (std::abs(p.y() - neck.y) > 8 || x < top_x - 10 || x > p2.x() || p.z() < p2.y() - 5 || p.z() > top_z + 5) continue;
+    const double depth = (Eigen::Vector2d(x, p.z()) - p1).dot(down);
+    if (depth > best) best = depth, *out = p;
+  }
+  return std::isfinite(best);
+}
+
+// Axilla fold: in the section a quarter of the way from the armpit up to
+// the shoulder point, the point deepest inside the section's convex hull
+// near the armpit, in front of it (front) or behind it (back).
+void AxillaFolds(Context* c, int sign, const Eigen::Vector3d& acromion) {
+  const ArmInfo& arm = c->arm[sign > 0 ? 0 : 1];
+  const double z = arm.armpit_z + 0.25 * (acromion.z() - arm.armpit_z);
+  const std::vector<int> rows = c->TrunkRows(c->At(z));
+  Eigen::MatrixX2d xy(static_cast<Eigen::Index>(rows.size()), 2);
+  for (size_t i = 0; i < rows.size(); ++i) xy.row(static_cast<Eigen::Index>(i)) = c->points.row(rows[i]).head<2>();
+  const std::vector<int> hull = ConvexHullIndices(xy);
+  if (hull.size() < 3) return;
+  const double ax = sign * arm.armpit.x();
+  for (bool front : {true, false}) {
+    double best = -1;
+    Eigen::Vector3d best_point;
+    for (size_t i = 0; i < rows.size(); ++i) {
+      const Eigen::Vector3d p = c->P(rows[i]);
+      const double x = sign * p.x();
+      if (x < ax - 70 || x > ax + 40 || (front ? p.y() <= arm.armpit.y() : p.y() >= arm.armpit.y())) continue;
+      double depth = kInf;
+      const Eigen::Vector2d q = p.head<2>();
+      for (size_t k = 0; k < hull.size(); ++k) {
+        const Eigen::Vector2d a = xy.row(hull[k]), b = xy.row(hull[(k + 1) % hull.size()]);
+        const double t = std::clamp((q - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-12), 0.0, 1.0);
+        depth = std::min(depth, (a + t * (b - a) - q).norm());
+      }
+      if (depth > best) best = depth, best_point = p;
+    }
+    const std::string name = std::string(front ? "axilla_front" : "axilla_back") + Side(sign);
+    if (best < 0) c->Missing(name, "no armpit fold in the section above the armpit");
+    else c->Put(name, best_point, arm.touching ? 0.3 : 0.7, "deepest_hull_pocket");
+  }
+}
+
+}  // namespace
+
+void FindNeckAndShoulders(Context* c) {
+  double armpit_z = 0;
+  for (const ArmInfo& arm : c->arm) armpit_z = std::max(armpit_z, arm.found ? arm.armpit_z : 0.0);
+  if (armpit_z <= 0) armpit_z = c->crotch_z + 0.56 * (c->crown_z - c->crotch_z);
+  const Neck neck = NarrowestNeck(*c, armpit_z + 60);
+  const double back_z = BackNeckZ(c, armpit_z + 40, neck.z);
+  PutSeam(c, "back_neck", back_z, false, 0.6, "back_profile_bend");
+  // Jugulare: the most backward front centre-line point in the 80 mm below
+  // the back neck point's height (the notch above the breastbone).
+  double best_y = kInf, best_z = -1;
+  for (double z = back_z - 80; z <= back_z; z += c->step) {
+    Eigen::Vector3d p;
+    if (SeamPoint(*c, z, true, &p) && p.y() < best_y) best_y = p.y(), best_z = z;
+  }
+  if (best_z > 0) PutSeam(c, "front_neck", best_z, true, 0.6, "front_profile_notch");
+  else c->Missing("front_neck", "no front centre-line points below the neck");
+  for (int sign : {+1, -1}) {
+    Eigen::Vector3d acromion;
+    if (!Shoulder(c, sign, &acromion)) {
+      c->Missing("shoulder" + Side(sign), "the arm or the shoulder's top was not found");
+      continue;
+    }
+    const ArmInfo& arm = c->arm[sign > 0 ? 0 : 1];
+    c->Put("shoulder" + Side(sign), acromion, arm.touching ? 0.4 : 0.75,
+           arm.t_pose ? "shoulder_top_over_armpit" : "shoulder_upper_outer_corner");
+    Eigen::Vector3d side;
+    if (SideNeck(*c, sign, neck, back_z + 0.03 * c->crown_z, acromion, &side)) {
+      c->Put("side_neck" + Side(sign), side, 0.7, "coronal_neck_shoulder_corner");
+    } else {
+      c->Missing("side_neck" + Side(sign), "no neck side in the coronal band");
+    }
+    AxillaFolds(c, sign, acromion);
+  }
+}
+
+}  // namespace bespoke::landmarks
