@@ -226,6 +226,14 @@ TEST(ComparePostures, JudgesLengthsOnly) {
   EXPECT_NEAR(p.max_abs_difference_mm, 8, 1e-9);
   EXPECT_FALSE(p.pass());
   EXPECT_TRUE(std::isnan(p.rows[0].truth_a_mm));
+  // A length the truth has but one pose lacks is a failed row, not a gap.
+  const json truth = {{"measurements", {Measurement("inside_leg", "length", 760)}}};
+  const PostureComparison q = ComparePostures(a, b, truth, truth, 5);
+  ASSERT_EQ(q.rows.size(), 4u);
+  EXPECT_EQ(q.rows[0].name, "inside_leg");
+  EXPECT_TRUE(q.rows[0].judged);
+  EXPECT_FALSE(q.rows[0].pass);
+  EXPECT_EQ(q.judged, 3);
 }
 
 std::string ReadText(const fs::path& file) {

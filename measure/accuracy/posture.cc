@@ -1,5 +1,6 @@
 #include "measure/accuracy/posture.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -31,7 +32,7 @@ std::map<std::string, Value> Values(const json& document, const std::string& wha
     v.kind = m.value("kind", std::string());
     if (m.contains("value_mm") && m["value_mm"].is_number()) v.value_mm = m["value_mm"].get<double>();
     const std::string name = m["name"].get<std::string>();
-    if (order && !values.count(name)) order->push_back(name);
+    if (order && std::find(order->begin(), order->end(), name) == order->end()) order->push_back(name);
     values[name] = v;
   }
   return values;
@@ -50,19 +51,22 @@ PostureComparison ComparePostures(const json& measured_a, const json& measured_b
   if (measured_a.is_null() || measured_b.is_null()) throw InputError("posture: both poses need measurements");
   PostureComparison result;
   result.tolerance_mm = tolerance_mm;
+  // Rows: the truth's measurements (a measured pose lacking one is a failed
+  // length, not a silent gap), then any other measured ones.
   std::vector<std::string> order;
-  const auto a = Values(measured_a, "pose A measurements", &order);
-  const auto b = Values(measured_b, "pose B measurements", nullptr);
-  const auto ta = Values(truth_a, "pose A truth", nullptr);
+  const auto ta = Values(truth_a, "pose A truth", &order);
   const auto tb = Values(truth_b, "pose B truth", nullptr);
+  const auto a = Values(measured_a, "pose A measurements", &order);
+  const auto b = Values(measured_b, "pose B measurements", &order);
   result.max_abs_difference_mm = kNaN;
   for (const std::string& name : order) {
-    if (!b.count(name)) continue;
     PostureRow row;
     row.name = name;
-    row.kind = a.at(name).kind;
-    row.measured_a_mm = a.at(name).value_mm;
-    row.measured_b_mm = b.at(name).value_mm;
+    for (const auto* values : {&ta, &a, &b}) {
+      if (row.kind.empty() && values->count(name)) row.kind = values->at(name).kind;
+    }
+    row.measured_a_mm = Get(a, name);
+    row.measured_b_mm = Get(b, name);
     row.truth_a_mm = Get(ta, name);
     row.truth_b_mm = Get(tb, name);
     row.difference_mm = row.measured_b_mm - row.measured_a_mm;  // NaN propagates

@@ -7,8 +7,9 @@
 // Input: the measurement documents of both poses (docs/contracts.md) and,
 // optionally (null json = none), both truth documents, shown beside so the
 // reader sees how much the body itself changed between the poses.
-// Output: one row per measurement in both measured documents; rows of kind
-// "length" are judged, the others are shown only. Failure: InputError for a
+// Output: one row per measurement of the truth A (when given) and of either
+// measured document; rows of kind "length" are judged (a length one pose
+// lacks fails), the others are shown only. Failure: InputError for a
 // document without a "measurements" array.
 #ifndef BESPOKE_MEASURE_ACCURACY_POSTURE_H_
 #define BESPOKE_MEASURE_ACCURACY_POSTURE_H_
