@@ -12,23 +12,36 @@ namespace bespoke {
 
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// True when, for every pair of consecutive samples, a greedy walk over the
-// mesh graph from the first one's nearest vertex towards the second sample
-// ends at the second one's nearest vertex: the flowed path does not jump
-// between parts of the surface that are close in space but apart over the
-// surface (lips, fingers), where the walk would stop on the near side.
+// True when every pair of consecutive samples has nearest vertices at most
+// three edges apart in the mesh graph: the flowed path does not jump between
+// parts of the surface that are close in space but apart over the surface
+// (lips, eyelids, fingers), where the two vertices are many edges apart.
 bool OnSurface(const MeshSurface& surface, const Eigen::MatrixX3d& path,
                std::vector<int>* hints) {
   auto& h = *hints;
+  std::vector<int> ring;
   surface.NearestVertex(path.row(0).transpose(), &h[0]);  // the flow's hints may be stale
   for (size_t i = 1; i < h.size(); ++i) {
-    const Eigen::Vector3d x = path.row(static_cast<Eigen::Index>(i)).transpose();
-    surface.NearestVertex(x, &h[i]);
-    int walk = h[i - 1];
-    if (walk == h[i] || surface.NearestVertex(x, &walk) == h[i]) continue;
-    if (std::find(surface.neighbours_begin(h[i]), surface.neighbours_end(h[i]), walk) ==
-        surface.neighbours_end(h[i]))
-      return false;
+    surface.NearestVertex(path.row(static_cast<Eigen::Index>(i)).transpose(), &h[i]);
+    if (h[i] == h[i - 1] || std::find(surface.neighbours_begin(h[i - 1]),
+                                      surface.neighbours_end(h[i - 1]),
+                                      h[i]) != surface.neighbours_end(h[i - 1]))
+      continue;
+    ring.assign(1, h[i - 1]);
+    bool near = false;
+    for (size_t begin = 0, depth = 0; depth < 3 && !near; ++depth) {
+      const size_t end = ring.size();
+      for (size_t k = begin; k < end && !near; ++k)
+        for (const int* u = surface.neighbours_begin(ring[k]); u != surface.neighbours_end(ring[k]); ++u) {
+          if (*u == h[i]) {
+            near = true;
+            break;
+          }
+          if (std::find(ring.begin(), ring.end(), *u) == ring.end()) ring.push_back(*u);
+        }
+      begin = end;
+    }
+    if (!near) return false;
   }
   return true;
 }

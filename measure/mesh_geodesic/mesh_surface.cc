@@ -127,8 +127,9 @@ void MeshSurface::BuildAdjacency() {
         }
       }
       if (others > 1)
-        throw InputError(name_, "non-manifold edge between vertices " + std::to_string(a) +
-                                    " and " + std::to_string(b) + " (used by " +
+        throw InputError(name_, "non-manifold edge between vertices " +
+                                    std::to_string(std::min(a, b)) + " and " +
+                                    std::to_string(std::max(a, b)) + " (used by " +
                                     std::to_string(others + 1) +
                                     " faces); mesh geodesics need every edge on at most two "
                                     "faces - repair the mesh first");
