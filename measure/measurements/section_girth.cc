@@ -1,0 +1,319 @@
+#include "measure/measurements/section_girth.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <unordered_map>
+#include <vector>
+
+#include "scanners/core/errors.h"
+#include "scanners/truth/convex_hull_2d.h"
+
+namespace bespoke {
+namespace {
+
+using Vec2 = Eigen::Vector2d;
+using Vec3 = Eigen::Vector3d;
+constexpr int kBins = 180;  // 2-degree angular bins around a loop's centre
+constexpr double kTwoPi = 6.283185307179586;
+
+struct PlaneFrame {
+  Vec3 origin, u, v;
+  Vec2 To2d(const Vec3& x) const { return {(x - origin).dot(u), (x - origin).dot(v)}; }
+  Vec3 To3d(const Vec2& p) const { return origin + p.x() * u + p.y() * v; }
+};
+
+PlaneFrame MakeFrame(const Vec3& point, const Vec3& normal) {
+  const Vec3 helper = std::abs(normal.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  const Vec3 u = normal.cross(helper).normalized();
+  return {point, u, normal.cross(u)};
+}
+
+// Union-find over the slab points, linking pairs closer than `gap` (grid hash).
+std::vector<int> Cluster(const std::vector<Vec2>& p, double gap, int* count) {
+  std::vector<int> parent(p.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  auto key = [](long long x, long long y) { return (x << 32) ^ (y & 0xffffffffLL); };
+  std::unordered_map<long long, std::vector<int>> cells;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    cells[key(std::llround(std::floor(p[i].x() / gap)), std::llround(std::floor(p[i].y() / gap)))].push_back(static_cast<int>(i));
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const long long cx = std::llround(std::floor(p[i].x() / gap)), cy = std::llround(std::floor(p[i].y() / gap));
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy) {
+        const auto it = cells.find(key(cx + dx, cy + dy));
+        if (it == cells.end()) continue;
+        for (int j : it->second)
+          if ((p[i] - p[j]).squaredNorm() <= gap * gap) parent[find(static_cast<int>(i))] = find(j);
+      }
+  }
+  std::vector<int> label(p.size(), -1), remap(p.size(), -1);
+  *count = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const int root = find(static_cast<int>(i));
+    if (remap[root] < 0) remap[root] = (*count)++;
+    label[i] = remap[root];
+  }
+  return label;
+}
+
+Eigen::MatrixX2d ToMatrix(const std::vector<Vec2>& p) {
+  Eigen::MatrixX2d m(static_cast<Eigen::Index>(p.size()), 2);
+  for (std::size_t i = 0; i < p.size(); ++i) m.row(static_cast<Eigen::Index>(i)) = p[i].transpose();
+  return m;
+}
+
+bool HullContains(const std::vector<Vec2>& pts, const Vec2& q) {
+  if (pts.size() < 3) return false;
+  const Eigen::MatrixX2d m = ToMatrix(pts);
+  const std::vector<int> hull = ConvexHullIndices(m);
+  if (hull.size() < 3) return false;
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const Vec2 a = m.row(hull[i]).transpose(), b = m.row(hull[(i + 1) % hull.size()]).transpose();
+    const Vec2 e = b - a, w = q - a;
+    if (e.x() * w.y() - e.y() * w.x() < 0) return false;  // hull is counter-clockwise
+  }
+  return true;
+}
+
+double MinDistance(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Vec2& x : a)
+    for (const Vec2& y : b) best = std::min(best, (x - y).squaredNorm());
+  return std::sqrt(best);
+}
+
+Vec2 Mean(const std::vector<Vec2>& p) {
+  Vec2 m = Vec2::Zero();
+  for (const Vec2& x : p) m += x;
+  return p.empty() ? m : Vec2(m / static_cast<double>(p.size()));
+}
+
+int BinOf(const Vec2& d) {
+  const double a = std::atan2(d.y(), d.x()) + kTwoPi / 2;  // 0..2pi
+  return std::min(kBins - 1, static_cast<int>(a / kTwoPi * kBins));
+}
+
+// Widest empty angular gap (degrees) of `p` seen from its own centroid: an
+// arc of a loop leaves >= ~180 degrees empty, a closed loop (a hand) little.
+double OwnAngularGapDeg(const std::vector<Vec2>& p) {
+  const Vec2 c = Mean(p);
+  std::vector<bool> hit(kBins, false);
+  for (const Vec2& x : p) hit[BinOf(x - c)] = true;
+  int best = 0, run = 0;
+  for (int k = 0; k < 2 * kBins; ++k) run = hit[k % kBins] ? 0 : run + 1, best = std::max(best, std::min(run, kBins));
+  return best * 360.0 / kBins;
+}
+
+// Angular occupancy of the part around `centre`: per bin, point count and mean radius.
+struct Occupancy {
+  std::vector<int> count = std::vector<int>(kBins, 0);
+  std::vector<double> radius = std::vector<double>(kBins, 0.0);
+};
+
+Occupancy Occupy(const std::vector<Vec2>& p, const Vec2& centre) {
+  Occupancy o;
+  for (const Vec2& x : p) {
+    const int b = BinOf(x - centre);
+    o.radius[b] += (x - centre).norm(), ++o.count[b];
+  }
+  for (int b = 0; b < kBins; ++b)
+    if (o.count[b]) o.radius[b] /= o.count[b];
+  return o;
+}
+
+// True when `piece` continues the part's loop across a hole: it lies mostly
+// in the part's empty bins, and at both ends its radius matches the radius
+// of the part's nearest occupied bins.
+bool ContinuesLoop(const SectionGirthOptions& options, const std::vector<Vec2>& piece, const Occupancy& part,
+                   const Vec2& centre) {
+  const Occupancy own = Occupy(piece, centre);
+  int inside = 0, total = 0;
+  for (int b = 0; b < kBins; ++b) {
+    if (!own.count[b]) continue;
+    total += own.count[b];
+    if (part.count[b] || part.count[(b + 1) % kBins] || part.count[(b + kBins - 1) % kBins]) inside += own.count[b];
+  }
+  if (inside > 0.2 * total) return false;
+  // The piece's angular extent: the complement of its widest empty run.
+  int best = -1, best_end = 0, run = 0;
+  for (int k = 0; k < 2 * kBins; ++k) {
+    run = own.count[k % kBins] ? 0 : run + 1;
+    if (run > best && run <= kBins) best = run, best_end = k;
+  }
+  const int first = (best_end + 1) % kBins;  // first occupied bin after the gap
+  int last = first;
+  for (int k = 0; k < kBins; ++k)
+    if (own.count[(first + k) % kBins]) last = (first + k) % kBins;
+  auto neighbour = [&](int from, int step) {
+    for (int k = 1; k < kBins; ++k) {
+      const int b = ((from + step * k) % kBins + kBins) % kBins;
+      if (part.count[b]) return b;
+    }
+    return -1;
+  };
+  const int before = neighbour(first, -1), after = neighbour(last, +1);
+  if (before < 0 || after < 0) return false;
+  auto matches = [&](double r, double expected) {
+    return std::abs(r - expected) <= options.radius_tolerance * expected;
+  };
+  return matches(own.radius[first], part.radius[before]) && matches(own.radius[last], part.radius[after]);
+}
+
+// The mean point of each angular bin of about smooth_arc_mm of arc.
+std::vector<Vec2> Denoise(const std::vector<Vec2>& p, const Vec2& centre, double arc_mm) {
+  double r = 0;
+  for (const Vec2& x : p) r += (x - centre).norm();
+  r /= static_cast<double>(p.size());
+  const int bins = std::max(8, static_cast<int>(kTwoPi * r / arc_mm));
+  std::vector<Vec2> sum(static_cast<std::size_t>(bins), Vec2::Zero());
+  std::vector<int> n(static_cast<std::size_t>(bins), 0);
+  for (const Vec2& x : p) {
+    const Vec2 d = x - centre;
+    const double a = std::atan2(d.y(), d.x()) + kTwoPi / 2;
+    const auto b = static_cast<std::size_t>(std::min(bins - 1, static_cast<int>(a / kTwoPi * bins)));
+    sum[b] += x, ++n[b];
+  }
+  std::vector<Vec2> out;
+  for (std::size_t b = 0; b < sum.size(); ++b)
+    if (n[b]) out.push_back(sum[b] / n[b]);
+  return out;
+}
+
+double LargestGap(const std::vector<Vec2>& p, const Vec2& centre) {
+  if (p.size() < 2) return 0;
+  std::vector<std::pair<double, int>> order;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    order.emplace_back(std::atan2(p[i].y() - centre.y(), p[i].x() - centre.x()), static_cast<int>(i));
+  std::sort(order.begin(), order.end());
+  double gap = 0;
+  for (std::size_t i = 0; i < order.size(); ++i)
+    gap = std::max(gap, (p[order[i].second] - p[order[(i + 1) % order.size()].second]).norm());
+  return gap;
+}
+
+}  // namespace
+
+void SectionGirthOptions::Check() const {
+  if (!(half_thickness_mm > 0 && half_thickness_mm <= 50))
+    throw InputError("section girth: half_thickness_mm must be in (0, 50]");
+  if (!(piece_gap_mm > 0) || !(bridge_gap_mm >= piece_gap_mm))
+    throw InputError("section girth: need 0 < piece_gap_mm <= bridge_gap_mm");
+  if (!(radius_tolerance > 0 && radius_tolerance < 1))
+    throw InputError("section girth: radius_tolerance must be in (0, 1)");
+  if (!(open_gap_mm > 0)) throw InputError("section girth: open_gap_mm must be > 0");
+  if (!(max_slide_mm > 0)) throw InputError("section girth: max_slide_mm must be > 0");
+  if (!(smooth_arc_mm >= 0)) throw InputError("section girth: smooth_arc_mm must be >= 0");
+  if (min_piece_points < 1) throw InputError("section girth: min_piece_points must be >= 1");
+}
+
+SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen::MatrixX3d& cloud,
+                                 const Eigen::MatrixX3d& normals, const Eigen::Vector3d& plane_point, const Eigen::Vector3d& plane_normal,
+                                 const Eigen::MatrixX3d& anchors) {
+  options.Check();
+  if (std::abs(plane_normal.norm() - 1) > 1e-6 || !plane_point.allFinite())
+    throw InputError("section girth: the plane needs a finite point and a unit normal");
+  if (anchors.rows() < 1) throw InputError("section girth: at least one anchor point is needed");
+  const PlaneFrame frame = MakeFrame(plane_point, plane_normal);
+  if (normals.rows() != 0 && normals.rows() != cloud.rows())
+    throw InputError("section girth: normals must have one row per point, or none");
+  std::vector<Vec2> slab;
+  const Eigen::VectorXd offset = (cloud.rowwise() - plane_point.transpose()) * plane_normal;
+  for (Eigen::Index i = 0; i < cloud.rows(); ++i) {
+    if (!(std::abs(offset(i)) <= options.half_thickness_mm)) continue;
+    Vec3 x = cloud.row(i).transpose();
+    if (normals.rows()) {
+      // Slide along the surface (its tangent closest to the plane normal)
+      // onto the plane: t = n - (n.s)s, moving by -offset / |t|^2 * t makes
+      // the offset 0. Points needing a longer slide than max_slide_mm lie
+      // where the surface is nearly parallel to the plane, off the section.
+      const Vec3 s = normals.row(i).transpose();
+      const Vec3 t = plane_normal - plane_normal.dot(s) * s;
+      const double slide = std::abs(offset(i)) / std::max(1e-9, t.norm());
+      if (!(slide <= options.max_slide_mm)) continue;  // nearly parallel: far from the section
+      x -= offset(i) / t.squaredNorm() * t;
+    }
+    slab.push_back(frame.To2d(x));
+  }
+  SectionGirth out;
+  out.points = static_cast<Eigen::Index>(slab.size());
+  if (slab.empty()) return out;
+
+  std::vector<int> label = Cluster(slab, options.piece_gap_mm, &out.pieces);
+  std::vector<std::vector<Vec2>> pieces(static_cast<std::size_t>(out.pieces));
+  for (std::size_t i = 0; i < slab.size(); ++i) pieces[static_cast<std::size_t>(label[i])].push_back(slab[i]);
+  std::size_t largest = 0;
+  for (const auto& piece : pieces) largest = std::max(largest, piece.size());
+  auto usable = [&](const std::vector<Vec2>& piece) {
+    return piece.size() >= std::min<std::size_t>(static_cast<std::size_t>(options.min_piece_points), largest);
+  };
+
+  // The seed piece.
+  int seed = -1;
+  Vec2 centroid = Vec2::Zero();
+  for (Eigen::Index a = 0; a < anchors.rows(); ++a) centroid += frame.To2d(anchors.row(a).transpose());
+  centroid /= static_cast<double>(anchors.rows());
+  if (anchors.rows() > 1)
+    for (std::size_t k = 0; k < pieces.size() && seed < 0; ++k)
+      if (usable(pieces[k]) && HullContains(pieces[k], centroid)) seed = static_cast<int>(k);
+  out.anchor_enclosed = seed >= 0;
+  if (seed < 0) {
+    const std::vector<Vec2> anchor0 = {frame.To2d(anchors.row(0).transpose())};
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      if (!usable(pieces[k])) continue;
+      const double d = MinDistance(pieces[k], anchor0);
+      if (d < best) best = d, seed = static_cast<int>(k);
+    }
+  }
+  std::vector<Vec2> part = pieces[static_cast<std::size_t>(seed)];
+  std::vector<bool> taken(pieces.size(), false);
+  taken[static_cast<std::size_t>(seed)] = true;
+
+  // Arcs of the same loop across scan holes.
+  for (bool grew = true; grew;) {
+    grew = false;
+    const Vec2 centre = Mean(part);
+    const Occupancy occupancy = Occupy(part, centre);
+    int pick = -1;
+    double pick_distance = options.bridge_gap_mm;
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      if (taken[k] || !usable(pieces[k])) continue;
+      const double d = MinDistance(pieces[k], part);
+      if (d > pick_distance) continue;
+      if (OwnAngularGapDeg(pieces[k]) < 120) continue;  // a closed loop of its own
+      if (!ContinuesLoop(options, pieces[k], occupancy, centre)) continue;
+      pick = static_cast<int>(k), pick_distance = d;
+    }
+    if (pick >= 0) {
+      taken[static_cast<std::size_t>(pick)] = true;
+      part.insert(part.end(), pieces[static_cast<std::size_t>(pick)].begin(), pieces[static_cast<std::size_t>(pick)].end());
+      ++out.pieces_joined;
+      grew = true;
+    }
+  }
+
+  const Vec2 centre = Mean(part);
+  out.largest_gap_mm = LargestGap(part, centre);
+  out.open = out.largest_gap_mm > options.open_gap_mm;
+  const std::vector<Vec2> outline = options.smooth_arc_mm > 0 ? Denoise(part, centre, options.smooth_arc_mm) : part;
+  const Eigen::MatrixX2d m = ToMatrix(outline);
+  const std::vector<int> hull = ConvexHullIndices(m);
+  out.hull.resize(static_cast<Eigen::Index>(hull.size()), 3);
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    out.hull.row(static_cast<Eigen::Index>(i)) = frame.To3d(m.row(hull[i]).transpose()).transpose();
+    if (hull.size() >= 2)
+      out.girth_mm += (m.row(hull[(i + 1) % hull.size()]) - m.row(hull[i])).norm();
+  }
+  out.part.resize(static_cast<Eigen::Index>(part.size()), 3);
+  for (std::size_t i = 0; i < part.size(); ++i)
+    out.part.row(static_cast<Eigen::Index>(i)) = frame.To3d(part[i]).transpose();
+  return out;
+}
+
+}  // namespace bespoke

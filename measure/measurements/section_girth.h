@@ -1,0 +1,71 @@
+// A girth on a point cloud: the length of a tape pulled tight around one body
+// part, in a given cutting plane (thesis 3.7; ISO 8559-1 girths).
+//
+//   1. slab      the cloud's points within half_thickness_mm of the plane,
+//                moved onto it: with normals, along the surface (the
+//                tangent closest to the plane's normal; a plain projection
+//                would push points of a surface sloping through the slab
+//                outwards, +4 mm on an arm cut at 30 degrees; points needing a
+//                slide longer than max_slide_mm are dropped), else projected;
+//   2. pieces    2-D single-linkage clusters (points closer than
+//                piece_gap_mm are one piece): the trunk, each arm, each
+//                leg, a hand beside the hip are separate pieces;
+//   3. the part  the seed piece holds the body part: with several anchors
+//                (datum points of a trunk girth) the piece whose convex hull
+//                encloses their centroid, else the piece nearest anchor 0.
+//                Scan holes (occluded armpits, crotch, under the chin) cut a
+//                loop into arcs: a piece joins the seed when it lies within
+//                bridge_gap_mm of it, in the angular gap the seed leaves open
+//                (seen from the seed's centre) and at the radius the seed has
+//                on both sides of that gap, i.e. it continues the same loop.
+//                A hand beside the hip lies farther out and stays outside;
+//   4. hull      perimeter of the 2-D convex hull of the part's points (the
+//                tape bridges concavities and holes alike). Optional
+//                denoising first: the mean of the points in angular bins of
+//                smooth_arc_mm of arc, so range noise does not push the hull
+//                outwards.
+// `open` is set when, going round the part by angle, two consecutive points
+// are more than open_gap_mm apart: the hull bridged a scan hole there.
+//
+// Input: #P x 3 cloud (body frame, mm), #P x 3 unit normals or 0 x 3, a plane (point, unit normal), #D x 3
+// anchors (D >= 1). Output: SectionGirth (mm). Failure: InputError for bad
+// options or a non-unit normal; a plane that misses the cloud gives
+// `points == 0` and girth 0 (the caller flags or skips it), never a throw.
+#ifndef BESPOKE_MEASURE_MEASUREMENTS_SECTION_GIRTH_H_
+#define BESPOKE_MEASURE_MEASUREMENTS_SECTION_GIRTH_H_
+
+#include <Eigen/Core>
+
+namespace bespoke {
+
+struct SectionGirthOptions {
+  double half_thickness_mm = 2.5;  // default 2.5 mm: slab half thickness around the plane
+  double max_slide_mm = 4.0;       // default 4 mm: longest slide along the surface onto the plane
+  double piece_gap_mm = 12.0;      // default 12 mm: 2-D points closer than this are one piece
+  double bridge_gap_mm = 150.0;    // default 150 mm: widest hole a loop is joined across
+  double radius_tolerance = 0.25;  // default 0.25: an arc's radius may differ this share from the loop's
+  double open_gap_mm = 30.0;       // default 30 mm: a longer gap between neighbours marks the loop open
+  double smooth_arc_mm = 6.0;      // default 6 mm: angular bin width of the denoising mean (0 = off)
+  int min_piece_points = 4;        // default 4: smaller pieces are noise (unless nothing else)
+  void Check() const;              // InputError when out of range
+};
+
+struct SectionGirth {
+  double girth_mm = 0;             // hull perimeter of the part
+  Eigen::MatrixX3d hull;           // #K x 3 hull polygon on the plane (closed implicitly), mm
+  Eigen::MatrixX3d part;           // #Q x 3 the part's slab points projected onto the plane, mm
+  Eigen::Index points = 0;         // slab points (all pieces)
+  int pieces = 0;                  // pieces in the slab
+  int pieces_joined = 0;           // pieces joined to the seed across holes
+  double largest_gap_mm = 0;       // widest gap between angular neighbours of the part
+  bool open = false;               // largest_gap_mm > open_gap_mm
+  bool anchor_enclosed = false;    // the seed was chosen by enclosing the anchors' centroid
+};
+
+SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen::MatrixX3d& cloud,
+                                 const Eigen::MatrixX3d& normals, const Eigen::Vector3d& plane_point, const Eigen::Vector3d& plane_normal,
+                                 const Eigen::MatrixX3d& anchors);
+
+}  // namespace bespoke
+
+#endif  // BESPOKE_MEASURE_MEASUREMENTS_SECTION_GIRTH_H_

@@ -1,0 +1,202 @@
+// Girths of known shapes sampled as clouds: circles and ellipses (2*pi*r and
+// Ramanujan's perimeter), with scan holes, a second leg beside the thigh and
+// a hand beside the hip. Tolerances in mm, stated per test.
+#include "measure/measurements/section_girth.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <random>
+#include <vector>
+
+#include "scanners/core/errors.h"
+
+namespace bespoke {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Points on a vertical prism z in [0, 200] mm with cross-section (x(t), y(t)),
+// t in [0, 2pi), about `spacing` mm apart, skipping angles where `keep` is false.
+struct Prism {
+  std::function<Eigen::Vector2d(double)> curve;
+  double perimeter_mm;
+};
+
+// Unit normals of the last Sample()d points, parallel to `points`.
+std::vector<Eigen::Vector3d> g_normals;
+
+void Sample(const Prism& prism, double spacing, const std::function<bool(double)>& keep, double noise_mm,
+            std::vector<Eigen::Vector3d>* out, std::uint32_t seed = 1) {
+  if (out->empty()) g_normals.clear();
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> n(0, 1);
+  const int around = static_cast<int>(prism.perimeter_mm / spacing);
+  for (double z = 0; z <= 200; z += spacing)
+    for (int k = 0; k < around; ++k) {
+      const double t = 2 * kPi * (k + 0.5 * std::fmod(z / spacing, 2.0)) / around;
+      if (!keep(t)) continue;
+      const Eigen::Vector2d p = prism.curve(t);
+      const Eigen::Vector2d d = (prism.curve(t + 1e-4) - p).normalized();
+      const Eigen::Vector2d normal(d.y(), -d.x());
+      const Eigen::Vector2d q = p + normal * noise_mm * n(rng);
+      out->emplace_back(q.x(), q.y(), z + (noise_mm > 0 ? noise_mm * n(rng) : 0.0));
+      g_normals.emplace_back(normal.x(), normal.y(), 0.0);
+    }
+}
+
+Prism Circle(double r, double cx = 0, double cy = 0) {
+  return {[=](double t) { return Eigen::Vector2d(cx + r * std::cos(t), cy + r * std::sin(t)); }, 2 * kPi * r};
+}
+
+Prism Ellipse(double a, double b, double cx = 0) {
+  const double h = (a - b) * (a - b) / ((a + b) * (a + b));
+  return {[=](double t) { return Eigen::Vector2d(cx + a * std::cos(t), b * std::sin(t)); },
+          kPi * (a + b) * (1 + 3 * h / (10 + std::sqrt(4 - 3 * h)))};
+}
+
+Eigen::MatrixX3d ToMatrix(const std::vector<Eigen::Vector3d>& p) {
+  Eigen::MatrixX3d m(static_cast<Eigen::Index>(p.size()), 3);
+  for (std::size_t i = 0; i < p.size(); ++i) m.row(static_cast<Eigen::Index>(i)) = p[i].transpose();
+  return m;
+}
+
+auto All = [](double) { return true; };
+const Eigen::Vector3d kPlane(0, 0, 100), kUp(0, 0, 1);
+
+SectionGirth Girth(const std::vector<Eigen::Vector3d>& cloud, const Eigen::MatrixX3d& anchors,
+                   SectionGirthOptions options = {}) {
+  return MeasureSectionGirth(options, ToMatrix(cloud), ToMatrix(g_normals), kPlane, kUp, anchors);
+}
+
+TEST(SectionGirth, CircleIsTwoPiR) {
+  std::vector<Eigen::Vector3d> cloud;
+  Sample(Circle(150), 4, All, 0, &cloud);
+  const SectionGirth g = Girth(cloud, Eigen::RowVector3d(150, 0, 100));
+  EXPECT_NEAR(g.girth_mm, 2 * kPi * 150, 0.5);  // mm; the inscribed polygon loses < 0.1 mm
+  EXPECT_FALSE(g.open);
+  EXPECT_EQ(g.pieces, 1);
+}
+
+TEST(SectionGirth, EllipsePrismMatchesRamanujan) {
+  std::vector<Eigen::Vector3d> cloud;
+  const Prism e = Ellipse(180, 120);
+  Sample(e, 4, All, 0, &cloud);
+  const SectionGirth g = Girth(cloud, Eigen::RowVector3d(180, 0, 100));
+  EXPECT_NEAR(g.girth_mm, e.perimeter_mm, 0.5);  // mm
+}
+
+TEST(SectionGirth, TiltedPlaneThroughACylinderIsAnEllipse) {
+  std::vector<Eigen::Vector3d> cloud;
+  Sample(Circle(50), 2, All, 0, &cloud);  // an arm-sized cylinder along z
+  const double tilt = 30 * kPi / 180;
+  const Eigen::Vector3d normal(std::sin(tilt), 0, std::cos(tilt));
+  const Eigen::RowVector3d anchor(50, 0, 100);
+  const double truth = Ellipse(50 / std::cos(tilt), 50).perimeter_mm;
+  SectionGirthOptions raw;
+  raw.smooth_arc_mm = 0;
+  const SectionGirth g = MeasureSectionGirth(raw, ToMatrix(cloud), ToMatrix(g_normals), kPlane, normal, anchor);
+  EXPECT_NEAR(g.girth_mm, truth, 1.0);  // mm
+  // Projected without normals, the slab's sloping surface pushes the hull out.
+  const SectionGirth flat = MeasureSectionGirth(raw, ToMatrix(cloud), Eigen::MatrixX3d(0, 3), kPlane, normal, anchor);
+  EXPECT_GT(flat.girth_mm - truth, 2.0);  // mm
+}
+
+TEST(SectionGirth, HoleSplittingTheLoopIsBridged) {
+  // Two 20-degree holes on opposite sides cut the loop into two arcs.
+  std::vector<Eigen::Vector3d> cloud;
+  auto keep = [](double t) {
+    const double deg = t * 180 / kPi;
+    return !((deg > 80 && deg < 100) || (deg > 260 && deg < 280));
+  };
+  Sample(Circle(150), 4, keep, 0, &cloud);
+  const SectionGirth g = Girth(cloud, Eigen::RowVector3d(150, 0, 100));
+  // The tape spans each hole with a chord: 2 * (arc - chord) shorter.
+  const double arc = 150 * 20 * kPi / 180, chord = 2 * 150 * std::sin(10 * kPi / 180);
+  EXPECT_EQ(g.pieces, 2);
+  EXPECT_EQ(g.pieces_joined, 1);
+  EXPECT_NEAR(g.girth_mm, 2 * kPi * 150 - 2 * (arc - chord), 2.0);  // mm (chord ends sampled 4 mm apart)
+  EXPECT_TRUE(g.open);
+  EXPECT_GT(g.largest_gap_mm, 45);
+}
+
+TEST(SectionGirth, ThighIgnoresTheOtherLeg) {
+  std::vector<Eigen::Vector3d> cloud;
+  Sample(Circle(80, 100), 4, All, 0, &cloud);
+  Sample(Circle(80, -100), 4, All, 0, &cloud);  // 40 mm apart
+  const SectionGirth g = Girth(cloud, Eigen::RowVector3d(180, 0, 100));
+  EXPECT_EQ(g.pieces, 2);
+  EXPECT_NEAR(g.girth_mm, 2 * kPi * 80, 0.5);  // mm
+  EXPECT_GT(g.part.col(0).minCoeff(), 15);     // only the right leg
+}
+
+Eigen::MatrixX3d HipAnchors() {
+  return (Eigen::MatrixX3d(3, 3) << 0, -130, 100, 180, 0, 100, -180, 0, 100).finished();
+}
+
+TEST(SectionGirth, HipExcludesTheHandBesideIt) {
+  std::vector<Eigen::Vector3d> cloud;
+  const Prism hip = Ellipse(180, 130);
+  Sample(hip, 4, All, 1.0, &cloud);
+  Sample(Circle(40, 235), 4, All, 1.0, &cloud, 2);  // 15 mm from the hip's side
+  const SectionGirth g = Girth(cloud, HipAnchors());
+  EXPECT_TRUE(g.anchor_enclosed);
+  EXPECT_LT(g.part.col(0).maxCoeff(), 190);
+  EXPECT_NEAR(g.girth_mm, hip.perimeter_mm, 8.0);  // mm; 1 mm noise pushes the raw hull out
+}
+
+TEST(SectionGirth, HipWithTheHandsShadowStillExcludesTheHand) {
+  // The hand hides the hip's side from view (a hole in the hip facing it);
+  // first the whole hand, then only its outer half (what a sensor sees).
+  const Prism hip = Ellipse(180, 130);
+  auto hip_keep = [](double t) {
+    const double deg = std::remainder(t * 180 / kPi, 360.0);
+    return std::abs(deg) > 25;
+  };
+  auto outer_half = [](double t) { return std::cos(t) > 0; };
+  // The tape spans the hole (-25..25 degrees) with a chord.
+  const double t0 = 25 * kPi / 180;
+  const double chord = (hip.curve(t0) - hip.curve(-t0)).norm();
+  double arc = 0;
+  for (int k = 0; k < 1000; ++k)
+    arc += (hip.curve(-t0 + 2 * t0 * (k + 1) / 1000) - hip.curve(-t0 + 2 * t0 * k / 1000)).norm();
+  for (bool whole_hand : {true, false}) {
+    std::vector<Eigen::Vector3d> cloud;
+    Sample(hip, 4, hip_keep, 0, &cloud);
+    Sample(Circle(40, 250), 4, whole_hand ? std::function<bool(double)>(All) : outer_half, 0, &cloud);
+    const SectionGirth g = Girth(cloud, HipAnchors());
+    EXPECT_LT(g.part.col(0).maxCoeff(), 190) << "whole hand " << whole_hand;
+    EXPECT_NEAR(g.girth_mm, hip.perimeter_mm - arc + chord, 2.0) << "whole hand " << whole_hand;  // mm
+    EXPECT_TRUE(g.open);
+  }
+}
+
+TEST(SectionGirth, SmoothingRemovesTheNoiseBias) {
+  std::vector<Eigen::Vector3d> cloud;
+  Sample(Circle(150), 2, All, 1.0, &cloud);
+  SectionGirthOptions off;
+  off.smooth_arc_mm = 0;
+  const SectionGirth raw = Girth(cloud, Eigen::RowVector3d(150, 0, 100), off);
+  const SectionGirth denoised = Girth(cloud, Eigen::RowVector3d(150, 0, 100));  // default 6 mm bins
+  const double truth = 2 * kPi * 150;
+  EXPECT_GT(raw.girth_mm - truth, 4.0);                      // mm: the hull rides the noise outwards
+  EXPECT_LT(std::abs(denoised.girth_mm - truth), 3.0);       // mm
+}
+
+TEST(SectionGirth, EmptySlabAndBadOptions) {
+  std::vector<Eigen::Vector3d> cloud;
+  Sample(Circle(150), 4, All, 0, &cloud);
+  const SectionGirth g =
+      MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), Eigen::Vector3d(0, 0, 900), kUp, Eigen::RowVector3d(0, 0, 900));
+  EXPECT_EQ(g.points, 0);
+  EXPECT_EQ(g.girth_mm, 0);
+  SectionGirthOptions bad;
+  bad.half_thickness_mm = 0;
+  EXPECT_THROW(Girth(cloud, Eigen::RowVector3d(150, 0, 100), bad), InputError);
+  EXPECT_THROW(MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), kPlane, Eigen::Vector3d(0, 0, 2), Eigen::RowVector3d(0, 0, 0)),
+               InputError);
+}
+
+}  // namespace
+}  // namespace bespoke
