@@ -10,7 +10,9 @@
 // With --truth-dir, the bodies are DIR/subject_*/truth.json (from
 // `bespoke synth-set`, measurements in the contracts.md schema); without it,
 // generated measurement sets (resize/designs/body_variants.h).
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -27,17 +29,25 @@ int main(int argc, char** argv) {
   int count = 20;
   std::string which = "both";
   std::filesystem::path truth_dir;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--population"))
-      options.population = std::stoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--generations"))
-      options.generations = std::stoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--bodies"))
-      count = std::stoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--design"))
+  const char* usage =
+      "usage: resize_evidence [--design shirt|trousers|both] [--bodies 20] [--population 400]\n"
+      "                       [--generations 200] [--truth-dir DIR]\n";
+  for (int i = 1; i < argc; i += 2) {
+    const bool has_value = i + 1 < argc;
+    if (!std::strcmp(argv[i], "--population") && has_value)
+      options.population = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--generations") && has_value)
+      options.generations = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--bodies") && has_value)
+      count = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--design") && has_value)
       which = argv[i + 1];
-    else if (!std::strcmp(argv[i], "--truth-dir"))
+    else if (!std::strcmp(argv[i], "--truth-dir") && has_value)
       truth_dir = argv[i + 1];
+    else {
+      std::fputs(usage, stderr);
+      return std::strcmp(argv[i], "--help") && std::strcmp(argv[i], "-h") ? 1 : 0;
+    }
   }
   std::vector<std::filesystem::path> truths;
   if (!truth_dir.empty()) {
