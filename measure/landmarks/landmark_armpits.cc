@@ -91,14 +91,25 @@ void FindArmpit(Context* c, int sign) {
   const int top = SliceAt(c->slices, 0.84 * h), bottom = SliceAt(c->slices, c->crotch_z + 0.15 * h);
   std::vector<double> ext(c->slices.size(), -kInf);
   for (int s = bottom; s <= top; ++s) ext[static_cast<size_t>(s)] = Extent(*c, c->slices[static_cast<size_t>(s)], sign);
+  // The trunk's own half-width for reference: its narrowest between 40 %
+  // and 60 % of the crotch-to-crown height (the waist; no arm reaches in).
+  double waist_ext = kInf;
+  for (int s = SliceAt(c->slices, c->crotch_z + 0.4 * (h - c->crotch_z));
+       s <= SliceAt(c->slices, c->crotch_z + 0.6 * (h - c->crotch_z)); ++s) {
+    waist_ext = std::min(waist_ext, Extent(*c, c->slices[static_cast<size_t>(s)], sign));
+  }
   // Descending, the first slice whose trunk extent drops 30 mm below the
-  // widest of the 60 mm above it, and stays there for two more slices.
+  // widest of the 60 mm above it down to a trunk-like width (within 90 mm
+  // of the waist's; a T-pose arm tilted upwards shortens gradually in the
+  // slices through it), and stays there for two more slices.
   int k = -1;
   for (int s = top - 1; s >= bottom + 2 && k < 0; --s) {
     double above = -kInf;
     for (int t = s + 1; t <= std::min(top, s + 12); ++t) above = std::max(above, ext[static_cast<size_t>(t)]);
     bool drop = true;
-    for (int t = s; t >= s - 2; --t) drop &= ext[static_cast<size_t>(t)] < above - 30;
+    for (int t = s; t >= s - 2; --t) {
+      drop &= ext[static_cast<size_t>(t)] < above - 30 && ext[static_cast<size_t>(t)] < waist_ext + 90;
+    }
     if (drop) k = s;
   }
   if (k < 0) {
@@ -120,16 +131,28 @@ void FindArmpit(Context* c, int sign) {
   const std::vector<int> trunk = c->TrunkRows(below);
   const Eigen::Vector2d trunk_side(sign * ext[static_cast<size_t>(k)], 0);
   int piece = LateralPieceNear(*c, below, sign, trunk_side, 250);
-  if (piece >= 0 && sign * below.pieces[static_cast<size_t>(piece)].lo.x() * 1.0 < ext[static_cast<size_t>(k)] - 40) piece = -1;
+  // An A-pose arm leaves the trunk right beside it; a piece far out is a
+  // T-pose forearm or hand hanging below the arm's line.
+  if (piece >= 0) {
+    const Piece& p = below.pieces[static_cast<size_t>(piece)];
+    const double inner = sign > 0 ? p.lo.x() : -p.hi.x();
+    if (inner < ext[static_cast<size_t>(k)] - 40 || inner > ext[static_cast<size_t>(k)] + 100) piece = -1;
+  }
   arm.found = true;
   if (piece >= 0) {
     // A-pose. The sections join between slice k and the one above; the
     // armpit is the trunk's side there, facing the arm (a hole in the
     // armpit can only raise the level where the pieces join, by its size).
-    int ra = -1, rb = -1;
-    ClosestPair(*c, trunk, below.pieces[static_cast<size_t>(piece)].rows, &ra, &rb);
+    // Its y: the arm's centre there (the hollow lies under the arm's middle).
+    const double arm_y = below.pieces[static_cast<size_t>(piece)].centroid.y();
+    double side_x = -kInf;
+    for (int r : trunk) {
+      const double x = sign * c->points(r, 0);
+      if (std::abs(c->points(r, 1) - arm_y) < 10 && x > ext[static_cast<size_t>(k)] - 40) side_x = std::max(side_x, x);
+    }
+    if (!std::isfinite(side_x)) side_x = ext[static_cast<size_t>(k)];
     const double apex = below.z + 0.5 * c->step;
-    const Eigen::Vector2d mid = c->points.row(ra).head<2>().transpose();
+    const Eigen::Vector2d mid(sign * side_x, arm_y);
     arm.t_pose = false;
     arm.armpit_z = apex;
     arm.armpit = Eigen::Vector3d(mid.x(), mid.y(), apex);

@@ -19,6 +19,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // style data), so 0.56; the scan has no reliable elbow shape cue when the
 // arm is straight.
 constexpr double kElbowShare = 0.56;
+constexpr double kStyloidPastNarrowest_mm = 15;
 
 struct ArmFrame {
   Eigen::Vector3d origin, axis;  // origin: the shoulder point (or armpit); axis: outwards along the arm
@@ -66,17 +67,14 @@ double SectionRadius(const Context& c, const ArmFrame& f, double t, double half)
   return r;
 }
 
-// The row in the slab |t - t0| < half maximising `score`; -1 when empty.
-template <typename Score>
-int BestInSlab(const Context& c, const ArmFrame& f, double t0, double half, Score score) {
-  int best = -1;
-  double best_score = -kInf;
+// The row in the slab |t - t0| < half most extreme along `direction`
+// (noise averaged); -1 when the slab is empty.
+int BestInSlab(const Context& c, const ArmFrame& f, double t0, double half, const Eigen::Vector3d& direction) {
+  std::vector<int> candidates;
   for (size_t i = 0; i < f.rows.size(); ++i) {
-    if (std::abs(f.t[i] - t0) > half) continue;
-    const double s = score(c.P(f.rows[i]));
-    if (s > best_score) best_score = s, best = f.rows[i];
+    if (std::abs(f.t[i] - t0) <= half) candidates.push_back(f.rows[i]);
   }
-  return best;
+  return c.SmoothExtreme(candidates, direction, 10);
 }
 
 void FindArm(Context* c, int sign) {
@@ -92,7 +90,15 @@ void FindArm(Context* c, int sign) {
   }
   std::vector<std::string> flags;
   double confidence = 0.75;
-  if (f.length < 0.3 * c->crown_z) flags.push_back("arm_incomplete"), confidence = 0.4;
+  if (f.length < 0.3 * c->crown_z) {
+    // Shoulder to fingertips is about 0.44 of stature: the hand is not in
+    // the scan (out of the booth's view, or merged with the thigh).
+    for (const char* n : {"upper_arm", "elbow", "wrist"}) {
+      c->Missing(n + side, "the arm's end is not in the scan (arm " +
+                               std::to_string(static_cast<int>(f.length)) + " mm from the shoulder)");
+    }
+    return;
+  }
   if (arm.touching) flags.push_back("arm_touching_torso"), confidence = 0.3;
   // Wrist: the narrowest section between 260 mm and 90 mm from the arm's end
   // (the hand is wider and flat).
@@ -105,7 +111,10 @@ void FindArm(Context* c, int sign) {
     for (const char* n : {"upper_arm", "elbow", "wrist"}) c->Missing(n + side, "the forearm was not found");
     return;
   }
-  auto back = [](const Eigen::Vector3d& p) { return -p.y(); };
+  const Eigen::Vector3d back = -Eigen::Vector3d::UnitY();
+  // The ulnar styloid sits at the forearm's distal end, just past the
+  // narrowest section (about 15 mm towards the hand).
+  wrist_t += kStyloidPastNarrowest_mm;
   const int wrist = BestInSlab(*c, f, wrist_t, 10, back);
   if (wrist >= 0) c->Put("wrist" + side, c->P(wrist), confidence, "arm_section_min_back", flags);
   const double elbow_t = kElbowShare * wrist_t;
@@ -119,7 +128,7 @@ void FindArm(Context* c, int sign) {
   const double upper_t = 0.5 * (c->P(elbow) - f.origin).dot(f.axis);
   const Eigen::Vector3d lateral = Eigen::Vector3d(sign, 0, 0);
   const Eigen::Vector3d outward = (lateral - lateral.dot(f.axis) * f.axis).normalized();
-  const int upper = BestInSlab(*c, f, upper_t, 10, [&](const Eigen::Vector3d& p) { return p.dot(outward); });
+  const int upper = BestInSlab(*c, f, upper_t, 10, outward);
   if (upper >= 0) c->Put("upper_arm" + side, c->P(upper), confidence * 0.8, "mid_upper_arm_outside", flags);
   else c->Missing("upper_arm" + side, "no arm points midway to the elbow");
 }

@@ -54,6 +54,12 @@ struct Context {
   bool Has(const std::string& name) const { return found.Has(name); }
   Eigen::Vector3d Pos(const std::string& name) const { return found.points.at(name).position_mm; }
 
+  // The row among `candidates` that is most extreme along `direction` once
+  // the scan's noise is averaged out: the candidates within `band_mm` of
+  // the raw extreme are scored by the mean of p . direction over their
+  // cloud neighbours within `radius_mm`. -1 when `candidates` is empty.
+  int SmoothExtreme(const std::vector<int>& candidates, const Eigen::Vector3d& direction,
+                    double radius_mm = 12, double band_mm = 6) const;
   // Rows of the trunk in slice `s`: the pieces reaching the body's middle
   // (|x| < core_mm), which the arms and hands never do.
   std::vector<int> TrunkRows(const Slice& s, double core_mm = 50) const;

@@ -109,6 +109,7 @@ int main(int argc, char** argv) {
       dz[name].push_back(std::abs(d.z()));
       all.push_back(d.norm());
       if (verbose) {
+        std::printf("truth z %.1f y %.1f  ", truth.z(), truth.y());
         std::printf("subject %d %-22s err %6.1f  d(%6.1f %6.1f %6.1f)  conf %.2f %s\n", i, name.c_str(), d.norm(),
                     d.x(), d.y(), d.z(), l.confidence, l.method.c_str());
       }

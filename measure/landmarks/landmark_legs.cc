@@ -10,7 +10,6 @@
 namespace bespoke::landmarks {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // Heights as shares of the crotch height. A standing scan shows no
 // reliable shape cue for the knee joint or the malleoli (the leg's width
 // changes smoothly there), so the levels come from adult proportions: knee
@@ -52,21 +51,21 @@ std::vector<std::vector<int>> TrackLeg(const Context& c, int sign) {
   return leg;
 }
 
-// The leg row within `half` of height z maximising score; -1 when none.
-template <typename Keep, typename Score>
+// The leg row within `half` of height z passing `keep` that is most
+// extreme along `direction` (noise averaged); -1 when none.
+template <typename Keep>
 int BestNear(const Context& c, const std::vector<std::vector<int>>& leg, double z, double half, Keep keep,
-             Score score) {
-  int best = -1;
-  double best_score = -kInf;
+             const Eigen::Vector3d& direction) {
+  std::vector<int> candidates;
   for (int s = SliceAt(c.slices, z - half); s <= SliceAt(c.slices, z + half); ++s) {
     for (int r : leg[static_cast<size_t>(s)]) {
       const Eigen::Vector3d p = c.P(r);
-      if (std::abs(p.z() - z) > half || !keep(p)) continue;
-      const double v = score(p);
-      if (v > best_score) best_score = v, best = r;
+      if (std::abs(p.z() - z) <= half && keep(p)) candidates.push_back(r);
     }
   }
-  return best;
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  return c.SmoothExtreme(candidates, direction);
 }
 
 void FindLeg(Context* c, int sign) {
@@ -75,7 +74,7 @@ void FindLeg(Context* c, int sign) {
   auto all = [](const Eigen::Vector3d&) { return true; };
   // Thigh: 20 mm below the crotch, the outside of the leg.
   const double thigh_z = c->crotch_z - 20;
-  const int thigh = BestNear(*c, leg, thigh_z, 4, all, [&](const Eigen::Vector3d& p) { return sign * p.x(); });
+  const int thigh = BestNear(*c, leg, thigh_z, 4, all, Eigen::Vector3d(sign, 0, 0));
   if (thigh >= 0) {
     Eigen::Vector3d p = c->P(thigh);
     p.z() = thigh_z;
@@ -84,7 +83,7 @@ void FindLeg(Context* c, int sign) {
     c->Missing("thigh" + side, "no leg section below the crotch");
   }
   const double knee_z = kKneeShare * c->crotch_z;
-  const int knee = BestNear(*c, leg, knee_z, 15, all, [](const Eigen::Vector3d& p) { return p.y(); });
+  const int knee = BestNear(*c, leg, knee_z, 15, all, Eigen::Vector3d::UnitY());
   if (knee >= 0) c->Put("knee" + side, c->P(knee), 0.6, "proportion_front_max");
   else c->Missing("knee" + side, "no leg section at knee height");
   const double ankle_z = kAnkleShare * c->crotch_z;
@@ -98,8 +97,8 @@ void FindLeg(Context* c, int sign) {
   } else {
     ay /= n;
     auto near_axis = [&](const Eigen::Vector3d& p) { return std::abs(p.y() - ay) < 30; };
-    const int in = BestNear(*c, leg, ankle_z, 12, near_axis, [&](const Eigen::Vector3d& p) { return -sign * p.x(); });
-    const int out = BestNear(*c, leg, ankle_z, 12, near_axis, [&](const Eigen::Vector3d& p) { return sign * p.x(); });
+    const int in = BestNear(*c, leg, ankle_z, 12, near_axis, Eigen::Vector3d(-sign, 0, 0));
+    const int out = BestNear(*c, leg, ankle_z, 12, near_axis, Eigen::Vector3d(sign, 0, 0));
     if (in >= 0) c->Put("ankle_inside" + side, c->P(in), 0.6, "proportion_section_inside");
     else c->Missing("ankle_inside" + side, "no points at the inner ankle");
     if (out >= 0) c->Put("ankle_outside" + side, c->P(out), 0.6, "proportion_section_outside");
@@ -108,7 +107,7 @@ void FindLeg(Context* c, int sign) {
   // Calf: the most backward point of the leg between 30 % and 90 % of the
   // way from the ankle to the knee.
   const double lo = ankle_z + 0.3 * (knee_z - ankle_z), hi = ankle_z + 0.9 * (knee_z - ankle_z);
-  const int calf = BestNear(*c, leg, 0.5 * (lo + hi), 0.5 * (hi - lo), all, [](const Eigen::Vector3d& p) { return -p.y(); });
+  const int calf = BestNear(*c, leg, 0.5 * (lo + hi), 0.5 * (hi - lo), all, -Eigen::Vector3d::UnitY());
   if (calf >= 0) c->Put("calf" + side, c->P(calf), 0.75, "leg_back_max");
   else c->Missing("calf" + side, "no leg section between ankle and knee");
 }

@@ -12,6 +12,8 @@ namespace bespoke::landmarks {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// Cervicale below the narrowest neck section, as a share of stature.
+constexpr double kBackNeckBelowNarrowest = 0.015;
 
 struct Neck {
   double z = 0;      // narrowest section above the shoulders
@@ -35,24 +37,6 @@ Neck NarrowestNeck(const Context& c, double from_z) {
   }
   if (!std::isfinite(best)) throw InputError("landmarks: no neck found above the shoulders");
   return neck;
-}
-
-// C7: on the back centre line between the armpits and the narrowest neck,
-// where the back profile bends forward most sharply (largest second
-// difference of y over +-15 mm): the base of the neck.
-double BackNeckZ(Context* c, double from_z, double to_z) {
-  std::vector<double> zs, ys;
-  for (double z = from_z; z <= to_z; z += c->step) {
-    Eigen::Vector3d p;
-    if (SeamPoint(*c, z, false, &p)) zs.push_back(z), ys.push_back(p.y());
-  }
-  const int n = static_cast<int>(zs.size()), k = std::max(1, static_cast<int>(std::lround(15 / c->step)));
-  double best = -kInf, best_z = 0.5 * (from_z + to_z);
-  for (int i = k; i + k < n; ++i) {
-    const double bend = ys[static_cast<size_t>(i + k)] - 2 * ys[static_cast<size_t>(i)] + ys[static_cast<size_t>(i - k)];
-    if (bend > best) best = bend, best_z = zs[static_cast<size_t>(i)];
-  }
-  return best_z;
 }
 
 // The shoulder point of one side; false when the arm was not found.
@@ -155,12 +139,17 @@ void FindNeckAndShoulders(Context* c) {
   for (const ArmInfo& arm : c->arm) armpit_z = std::max(armpit_z, arm.found ? arm.armpit_z : 0.0);
   if (armpit_z <= 0) armpit_z = c->crotch_z + 0.56 * (c->crown_z - c->crotch_z);
   const Neck neck = NarrowestNeck(*c, armpit_z + 60);
-  const double back_z = BackNeckZ(c, armpit_z + 40, neck.z);
-  PutSeam(c, "back_neck", back_z, false, 0.6, "back_profile_bend");
-  // Jugulare: the most backward front centre-line point in the 80 mm below
-  // the back neck point's height (the notch above the breastbone).
+  // C7 from the back profile's bend is unreliable on scans (the back of the
+  // neck curves gradually); its height is taken 1.5 % of stature below the
+  // narrowest neck section, which matched the MakeHuman bodies' cervicale
+  // (22-26 mm below) better than the bend (docs/landmarks.md).
+  const double back_z = neck.z - kBackNeckBelowNarrowest * c->crown_z;
+  PutSeam(c, "back_neck", back_z, false, 0.6, "below_narrowest_neck");
+  // Jugulare: the most backward front centre-line point between the
+  // armpits and the narrowest neck (the notch above the breastbone, where
+  // the chest's front turns up into the throat).
   double best_y = kInf, best_z = -1;
-  for (double z = back_z - 80; z <= back_z; z += c->step) {
+  for (double z = armpit_z + 40; z <= neck.z; z += c->step) {
     Eigen::Vector3d p;
     if (SeamPoint(*c, z, true, &p) && p.y() < best_y) best_y = p.y(), best_z = z;
   }
@@ -176,7 +165,13 @@ void FindNeckAndShoulders(Context* c) {
     c->Put("shoulder" + Side(sign), acromion, arm.touching ? 0.4 : 0.75,
            arm.t_pose ? "shoulder_top_over_armpit" : "shoulder_upper_outer_corner");
     Eigen::Vector3d side;
-    if (SideNeck(*c, sign, neck, back_z + 0.03 * c->crown_z, acromion, &side)) {
+    // The neck's coronal plane: 40 % of the way from the back neck point
+    // to the front neck point (the cervical spine lies behind the middle).
+    Neck plane = neck;
+    if (c->Has("back_neck") && c->Has("front_neck")) {
+      plane.y = c->Pos("back_neck").y() + 0.4 * (c->Pos("front_neck").y() - c->Pos("back_neck").y());
+    }
+    if (SideNeck(*c, sign, plane, back_z + 0.03 * c->crown_z, acromion, &side)) {
       c->Put("side_neck" + Side(sign), side, 0.7, "coronal_neck_shoulder_corner");
     } else {
       c->Missing("side_neck" + Side(sign), "no neck side in the coronal band");

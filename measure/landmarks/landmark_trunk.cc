@@ -21,12 +21,18 @@ bool SeamPoint(const Context& c, double z, bool front, Eigen::Vector3d* out, dou
   for (int k = 0; k <= 3; ++k) {
     for (int s : {centre - k, centre + k}) {
       if (s < 0 || s >= static_cast<int>(c.slices.size())) continue;
-      double best = front ? -kInf : kInf;
+      // The narrowest strip that holds points: the centre line itself can
+      // lie in a fold (the gluteal cleft, between the breasts).
       int best_row = -1;
-      for (int r : c.TrunkRows(c.slices[static_cast<size_t>(s)])) {
-        if (std::abs(c.points(r, 0)) > half_width_mm) continue;
-        const double y = c.points(r, 1);
-        if (front ? y > best : y < best) best = y, best_row = r;
+      const std::vector<int> rows = c.TrunkRows(c.slices[static_cast<size_t>(s)]);
+      for (double width : {std::min(5.0, half_width_mm), half_width_mm}) {
+        double best = front ? -kInf : kInf;
+        for (int r : rows) {
+          if (std::abs(c.points(r, 0)) > width) continue;
+          const double y = c.points(r, 1);
+          if (front ? y > best : y < best) best = y, best_row = r;
+        }
+        if (best_row >= 0) break;
       }
       if (best_row >= 0) {
         *out = c.P(best_row);
@@ -123,14 +129,14 @@ void Bust(Context* c, double* bust_z) {
     const ArmInfo& arm = c->arm[sign > 0 ? 0 : 1];
     if (!arm.found) { c->Missing(name, "the armpit was not found"); continue; }
     const double ax = sign * arm.armpit.x();
-    int best = -1;
+    std::vector<int> candidates;
     for (int s = SliceAt(c->slices, arm.armpit_z - 0.10 * h); s <= SliceAt(c->slices, arm.armpit_z - 0.02 * h); ++s) {
       for (int r : c->TrunkRows(c->slices[static_cast<size_t>(s)])) {
         const double x = sign * c->points(r, 0);
-        if (x <= 0.3 * ax || x >= ax) continue;
-        if (best < 0 || c->points(r, 1) > c->points(best, 1)) best = r;
+        if (x > 0.3 * ax && x < ax) candidates.push_back(r);
       }
     }
+    const int best = c->SmoothExtreme(candidates, Eigen::Vector3d::UnitY(), 10, 4);
     if (best < 0) { c->Missing(name, "no chest points below the armpit"); continue; }
     c->Put(name, c->P(best), 0.8, "front_max_below_armpit");
     if (sign > 0) *bust_z = c->points(best, 2);
@@ -171,13 +177,13 @@ void FindTrunkLevels(Context* c) {
   // Hip (seat) level: the most backward point of the buttocks, between the
   // crotch and 10 % of stature under the under-bust level.
   const double top = under_z > 0 ? under_z - 0.1 * h : c->crotch_z + 0.15 * h;
-  int buttock = -1;
+  std::vector<int> behind;
   for (int s = SliceAt(c->slices, c->crotch_z); s <= SliceAt(c->slices, top); ++s) {
     for (int r : c->TrunkRows(c->slices[static_cast<size_t>(s)], 150)) {
-      if (std::abs(c->points(r, 0)) > 150) continue;
-      if (buttock < 0 || c->points(r, 1) < c->points(buttock, 1)) buttock = r;
+      if (std::abs(c->points(r, 0)) < 150) behind.push_back(r);
     }
   }
+  const int buttock = c->SmoothExtreme(behind, -Eigen::Vector3d::UnitY(), 15, 5);
   if (buttock < 0) throw InputError("landmarks: no buttocks found above the crotch");
   const double hip_z = c->points(buttock, 2);
   // Waist: the smallest convex-hull girth of the trunk between 3 % of
@@ -212,10 +218,15 @@ void FindTrunkLevels(Context* c) {
   for (const auto& [name, z] : {std::pair{"side_waist", waist_z}, std::pair{"hip", hip_z}}) {
     const std::vector<int> rows = c->TrunkRows(c->At(z));
     for (int sign : {+1, -1}) {
-      int side = -1;
-      for (int r : rows) if (side < 0 || sign * c->points(r, 0) > sign * c->points(side, 0)) side = r;
-      if (side < 0) { c->Missing(std::string(name) + Side(sign), "empty trunk section"); continue; }
-      Eigen::Vector3d p = c->P(side);
+      // The side's y: the middle of the points within 3 mm of the extreme
+      // (the side of a section is flat front to back).
+      double extreme = -kInf;
+      for (int r : rows) extreme = std::max(extreme, sign * c->points(r, 0));
+      std::vector<double> ys;
+      for (int r : rows) if (sign * c->points(r, 0) > extreme - 3) ys.push_back(c->points(r, 1));
+      if (ys.empty()) { c->Missing(std::string(name) + Side(sign), "empty trunk section"); continue; }
+      std::nth_element(ys.begin(), ys.begin() + static_cast<std::ptrdiff_t>(ys.size() / 2), ys.end());
+      Eigen::Vector3d p(sign * extreme, ys[ys.size() / 2], z);
       p.z() = z;
       c->Put(std::string(name) + Side(sign), p, z == hip_z ? 0.85 : waist_confidence, "section_side_extreme");
     }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "measure/landmarks/landmark_context.h"
 #include "scanners/catalogue/catalogue.h"
@@ -33,6 +34,30 @@ void Context::Put(const std::string& name, const Eigen::Vector3d& position, doub
 
 void Context::Missing(const std::string& name, const std::string& why) {
   if (!found.Has(name)) found.missing[name] = why;
+}
+
+int Context::SmoothExtreme(const std::vector<int>& candidates, const Eigen::Vector3d& direction,
+                           double radius_mm, double band_mm) const {
+  if (candidates.empty()) return -1;
+  double top = -std::numeric_limits<double>::infinity();
+  for (int r : candidates) top = std::max(top, P(r).dot(direction));
+  int best = -1;
+  double best_score = -std::numeric_limits<double>::infinity();
+  std::vector<int> near;
+  std::vector<double> d2;
+  for (int r : candidates) {
+    if (P(r).dot(direction) < top - band_mm) continue;
+    index->Knn(P(r), 32, &near, &d2);
+    double sum = 0;
+    int n = 0;
+    for (size_t k = 0; k < near.size(); ++k) {
+      if (d2[k] > radius_mm * radius_mm) break;
+      sum += P(near[k]).dot(direction), ++n;
+    }
+    const double score = sum / std::max(n, 1);
+    if (score > best_score) best_score = score, best = r;
+  }
+  return best;
 }
 
 std::vector<int> Context::TrunkPieces(const Slice& s, double core_mm) const {
