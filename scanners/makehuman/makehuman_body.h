@@ -82,7 +82,8 @@ MakeHumanParameters MakeHumanDraw(const MakeHumanBodyOptions& options);
 std::map<std::string, double> MakeHumanTargetWeights(const MakeHumanParameters& parameters,
                                                      double height_weight);
 
-// Generates the body: model "makehuman", landmarks from the fixed table,
+// Generates the body: model "makehuman", landmarks from the fixed table
+// (except the crown: the body's highest vertex, so stature = crown height),
 // parameters = every value used (and "seed", "height_weight").
 // InputError for bad options, a stature the height targets cannot reach
 // (beyond weight +-1), or missing/malformed data.
