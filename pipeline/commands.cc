@@ -12,6 +12,7 @@ CommandRunner SetupRunCommand(CLI::App& app);
 CommandRunner SetupBatchCommand(CLI::App& app);
 CommandRunner SetupBatchMergeCommand(CLI::App& app);
 CommandRunner SetupGeodesicCommand(CLI::App& app);
+CommandRunner SetupMeshGeodesicCommand(CLI::App& app);
 CommandRunner SetupValidateCommand(CLI::App& app);
 CommandRunner SetupScanSimCommand(CLI::App& app);
 CommandRunner SetupSynthBodyCommand(CLI::App& app);
@@ -35,6 +36,8 @@ const std::vector<Command>& AllCommands() {
        &SetupBatchMergeCommand},
       {"geodesic", "Geodesic length between two points, or distance field, on a scan's points",
        &SetupGeodesicCommand},
+      {"mesh-geodesic", "Geodesics on a triangle mesh from a vertex (thesis Algorithms 1-3, or CGAL exact)",
+       &SetupMeshGeodesicCommand},
       {"validate", "Compare a scan's cloud geodesics with exact ones on a reconstructed mesh",
        &SetupValidateCommand},
       {"scan-sim", "Simulate a body-scanner booth: a realistic noisy scan of a body mesh (+ its truth)",
