@@ -19,6 +19,7 @@ CommandRunner SetupSynthBodyCommand(CLI::App& app);
 CommandRunner SetupSynthSetCommand(CLI::App& app);
 CommandRunner SetupResizeCommand(CLI::App& app);
 CommandRunner SetupDraftCommand(CLI::App& app);
+CommandRunner SetupAccuracyCommand(CLI::App& app);
 
 const std::vector<Command>& AllCommands() {
   static const std::vector<Command> commands = {
@@ -50,6 +51,8 @@ const std::vector<Command>& AllCommands() {
        &SetupResizeCommand},
       {"draft", "Draft a built-in design (shirt, trousers) directly for a body's measurements",
        &SetupDraftCommand},
+      {"accuracy", "Accuracy report: N oracle subjects scanned, measured and compared with their truth (ISO 20685-1)",
+       &SetupAccuracyCommand},
   };
   return commands;
 }
