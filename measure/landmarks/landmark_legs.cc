@@ -55,7 +55,7 @@ std::vector<std::vector<int>> TrackLeg(const Context& c, int sign) {
 // extreme along `direction` (noise averaged); -1 when none.
 template <typename Keep>
 int BestNear(const Context& c, const std::vector<std::vector<int>>& leg, double z, double half, Keep keep,
-             const Eigen::Vector3d& direction) {
+             const Eigen::Vector3d& direction, double radius_mm = 12) {
   std::vector<int> candidates;
   for (int s = SliceAt(c.slices, z - half); s <= SliceAt(c.slices, z + half); ++s) {
     for (int r : leg[static_cast<size_t>(s)]) {
@@ -65,7 +65,7 @@ int BestNear(const Context& c, const std::vector<std::vector<int>>& leg, double 
   }
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-  return c.SmoothExtreme(candidates, direction);
+  return c.SmoothExtreme(candidates, direction, radius_mm, radius_mm / 2);
 }
 
 void FindLeg(Context* c, int sign) {
@@ -105,9 +105,10 @@ void FindLeg(Context* c, int sign) {
     else c->Missing("ankle_outside" + side, "no points at the outer ankle");
   }
   // Calf: the most backward point of the leg between 30 % and 90 % of the
-  // way from the ankle to the knee.
+  // way from the ankle to the knee, averaged over 25 mm (the calf's back is
+  // a long flat arc; the bulge's middle is wanted, not the noise's peak).
   const double lo = ankle_z + 0.3 * (knee_z - ankle_z), hi = ankle_z + 0.9 * (knee_z - ankle_z);
-  const int calf = BestNear(*c, leg, 0.5 * (lo + hi), 0.5 * (hi - lo), all, -Eigen::Vector3d::UnitY());
+  const int calf = BestNear(*c, leg, 0.5 * (lo + hi), 0.5 * (hi - lo), all, -Eigen::Vector3d::UnitY(), 25);
   if (calf >= 0) c->Put("calf" + side, c->P(calf), 0.75, "leg_back_max");
   else c->Missing("calf" + side, "no leg section between ankle and knee");
 }

@@ -1,0 +1,217 @@
+// The landmark detector on virtual scans of generated bodies, against their
+// exact datum points (mm): parametric bodies in an A-pose, a T-pose and with
+// the arms close to the torso, a scan with a big hole at the armpit, and
+// (with ../shared) MakeHuman bodies. Tolerances are per landmark group, in
+// mm, set from measured errors (docs/landmarks.md has the evaluation over
+// more subjects: build/measure/landmark_eval).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "measure/landmarks/landmarks.h"
+#include "measure/landmarks/testing/scanned_body.h"
+#include "scanners/body/parametric_body.h"
+#include "scanners/catalogue/catalogue.h"
+#include "scanners/core/errors.h"
+#include "scanners/makehuman/makehuman_body.h"
+#include "tests/support/test_support.h"
+
+namespace bespoke {
+namespace {
+
+// A tolerance on the 3-D distance (`dz_only` false) or on the height
+// difference (true), for the landmarks whose name starts with `prefix`.
+struct Tolerance {
+  const char* prefix;
+  double mm;
+  bool dz_only = false;
+};
+
+bool StartsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+
+// Checks every truth landmark matched by a tolerance; prints every error.
+void ExpectWithin(const LandmarkSet& set, const std::map<std::string, Eigen::Vector3d>& truth,
+                  const std::vector<Tolerance>& tolerances, const std::string& what) {
+  for (const auto& [name, point] : truth) {
+    const auto tol = std::find_if(tolerances.begin(), tolerances.end(),
+                                  [&](const Tolerance& t) { return StartsWith(name, t.prefix); });
+    if (!set.Has(name)) {
+      ADD_FAILURE() << what << ": " << name << " missing: "
+                    << (set.missing.count(name) ? set.missing.at(name) : "?");
+      continue;
+    }
+    const Eigen::Vector3d d = set.At(name).position_mm - point;
+    std::printf("%s %-22s %6.1f mm (dz %6.1f) %s\n", what.c_str(), name.c_str(), d.norm(), d.z(),
+                tol == tolerances.end() ? "(not checked)" : "");
+    if (tol == tolerances.end()) continue;
+    const double error = tol->dz_only ? std::abs(d.z()) : d.norm();
+    EXPECT_LE(error, tol->mm) << what << ": " << name << (tol->dz_only ? " height" : "") << " error (mm)";
+  }
+}
+
+// Parametric bodies. Not checked: shoulder, side neck, back neck, thigh,
+// axilla folds and upper arm, which the parametric construction places by
+// its own rules (e.g. the shoulder point on the torso's side, inside the
+// deltoid; the thigh point behind the leg) rather than by the catalogue
+// definitions the detector follows (docs/landmarks.md, "Truths").
+const std::vector<Tolerance> kParametricA = {
+    {"crown", 15},          {"crotch", 10, true},   {"front_neck", 15},    {"armpit", 35},
+    {"bust", 35},           {"under_bust", 50},     {"front_waist", 60},   {"back_waist", 60},
+    {"side_waist", 60},     {"middle_hip", 35},     {"hip_back", 15},      {"hip_", 20},
+    {"knee", 20},           {"calf", 25},           {"ankle", 30},         {"wrist", 45},
+    {"elbow", 70},
+};
+
+struct ParametricCase {
+  std::uint64_t seed;
+  double arm_deg;
+};
+
+class ParametricLandmarks : public ::testing::TestWithParam<ParametricCase> {};
+
+TEST_P(ParametricLandmarks, WithinToleranceOfTheTruth) {
+  const ParametricCase c = GetParam();
+  ParametricBodyOptions options;
+  options.seed = c.seed;
+  options.arm_abduction_deg = c.arm_deg;
+  const Body body = GenerateParametricBody(options);
+  testing::ScannedBodyOptions scan_options;
+  scan_options.scan_seed = c.seed;
+  const testing::ScannedBody scan = testing::ScanAndClean(scan_options, body);
+  const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
+  ExpectWithin(set, scan.truth, kParametricA, "parametric seed " + std::to_string(c.seed));
+}
+
+// Arms at 30 deg (A-pose) and at 15 deg, the closest the parametric body
+// allows (a gap of a few centimetres at the elbow).
+INSTANTIATE_TEST_SUITE_P(APose, ParametricLandmarks,
+                         ::testing::Values(ParametricCase{1, 30}, ParametricCase{2, 30},
+                                           ParametricCase{4, 15}));
+
+TEST(ParametricLandmarks, TPose) {
+  ParametricBodyOptions options;
+  options.seed = 3;
+  options.arm_abduction_deg = 90;
+  const Body body = GenerateParametricBody(options);
+  testing::ScannedBodyOptions scan_options;
+  scan_options.scan_seed = 3;
+  const testing::ScannedBody scan = testing::ScanAndClean(scan_options, body);
+  const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
+  // The booth does not see the T-posed hands: the arm's end points must be
+  // reported missing with the reason, not guessed.
+  for (const char* name : {"wrist_right", "wrist_left", "elbow_right", "elbow_left"}) {
+    EXPECT_FALSE(set.Has(name)) << name;
+    ASSERT_TRUE(set.missing.count(name)) << name;
+    EXPECT_NE(set.missing.at(name).find("not in the scan"), std::string::npos) << set.missing.at(name);
+  }
+  std::map<std::string, Eigen::Vector3d> truth = scan.truth;
+  for (const char* name : {"wrist", "elbow", "upper_arm", "axilla"}) {
+    for (auto it = truth.begin(); it != truth.end();) it = StartsWith(it->first, name) ? truth.erase(it) : std::next(it);
+  }
+  // First match wins: the T-pose armpit lies under the arm's bend (measured 68-76 mm).
+  std::vector<Tolerance> t_pose = {{"armpit", 80}};
+  t_pose.insert(t_pose.end(), kParametricA.begin(), kParametricA.end());
+  ExpectWithin(set, truth, t_pose, "T-pose");
+}
+
+// A big hole at the right armpit (every point within 40 mm removed, as a
+// badly occluded scan would have): the armpit is still placed, within the
+// hole's size of the truth, from the gap between arm and trunk below it.
+TEST(ParametricLandmarks, HoleAtTheArmpit) {
+  ParametricBodyOptions options;
+  options.seed = 1;
+  const Body body = GenerateParametricBody(options);
+  testing::ScannedBodyOptions scan_options;
+  scan_options.scan_seed = 1;
+  testing::ScannedBody scan = testing::ScanAndClean(scan_options, body);
+  const Eigen::Vector3d armpit = scan.truth.at("armpit_right");
+  std::vector<Eigen::Index> keep;
+  for (Eigen::Index i = 0; i < scan.cloud.size(); ++i) {
+    if ((scan.cloud.points.row(i).transpose() - armpit).norm() > 40) keep.push_back(i);
+  }
+  ASSERT_LT(keep.size(), static_cast<size_t>(scan.cloud.size()) - 50) << "the hole removed too few points";
+  scan.cloud = scan.cloud.Select(keep);
+  const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
+  ASSERT_TRUE(set.Has("armpit_right")) << set.missing.at("armpit_right");
+  const Landmark& found = set.At("armpit_right");
+  const double error = (found.position_mm - armpit).norm();
+  std::printf("armpit in a 40 mm hole: error %.1f mm, flags %zu\n", error, found.flags.size());
+  EXPECT_LE(error, 50.0) << "mm";
+  EXPECT_LE(std::abs(found.position_mm.z() - armpit.z()), 40.0) << "mm, height";
+  // The rest of the chest is unaffected.
+  EXPECT_LE((set.At("bust_right").position_mm - scan.truth.at("bust_right")).norm(), 35.0);
+  EXPECT_LE((set.At("armpit_left").position_mm - scan.truth.at("armpit_left")).norm(), 35.0);
+}
+
+// MakeHuman bodies (../shared): every catalogue landmark checked.
+const std::vector<Tolerance> kMakeHuman = {
+    {"crown", 15},        {"crotch", 80},        {"back_neck", 25},    {"front_neck", 25},
+    {"side_neck", 30},    {"shoulder", 40},      {"armpit", 35},       {"axilla", 35},
+    {"bust", 45},         {"under_bust", 25},    {"front_waist", 30},  {"back_waist", 40},
+    {"side_waist", 35},   {"middle_hip", 35},    {"hip_back", 30},     {"hip_", 50},
+    {"thigh", 40},        {"knee", 50},          {"calf", 55},         {"ankle", 35},
+    {"upper_arm", 90},    {"elbow", 75},         {"wrist", 30},
+};
+
+TEST(MakeHumanLandmarks, WithinToleranceOfTheTruth) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(shared / "data/bodies/makehuman");
+  std::vector<double> errors;
+  for (std::uint64_t seed : {1001, 1002}) {
+    MakeHumanBodyOptions options;
+    options.seed = seed;
+    const Body body = GenerateMakeHumanBody(options, &model);
+    testing::ScannedBodyOptions scan_options;
+    scan_options.scan_seed = seed;
+    const testing::ScannedBody scan = testing::ScanAndClean(scan_options, body);
+    const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
+    ExpectWithin(set, scan.truth, kMakeHuman, "makehuman seed " + std::to_string(seed));
+    for (const auto& [name, point] : scan.truth) {
+      if (set.Has(name)) errors.push_back((set.At(name).position_mm - point).norm());
+    }
+  }
+  std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(errors.size() / 2), errors.end());
+  const double median = errors[errors.size() / 2];
+  std::printf("MakeHuman median landmark error %.1f mm\n", median);
+  // The target is 10 mm; measured 13-16 mm (docs/landmarks.md).
+  EXPECT_LE(median, 18.0) << "mm";
+}
+
+TEST(Landmarks, EveryCatalogueLandmarkIsPlacedOrMissingWithAReason) {
+  ParametricBodyOptions options;
+  options.seed = 2;
+  const Body body = GenerateParametricBody(options);
+  const testing::ScannedBody scan = testing::ScanAndClean(testing::ScannedBodyOptions{}, body);
+  const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
+  for (const LandmarkDef& def : Catalogue::Builtin().landmarks()) {
+    EXPECT_TRUE(set.Has(def.name)) << def.name << ": " << (set.missing.count(def.name) ? set.missing.at(def.name) : "");
+    if (!set.Has(def.name)) continue;
+    const Landmark& l = set.At(def.name);
+    EXPECT_FALSE(l.method.empty()) << def.name;
+    EXPECT_GE(l.confidence, 0.0);
+    EXPECT_LE(l.confidence, 1.0);
+  }
+  // `only` keeps the listed points.
+  LandmarkOptions some;
+  some.only = {"crown", "wrist_left"};
+  const LandmarkSet two = DetectLandmarks(some, scan.cloud);
+  EXPECT_EQ(two.points.size() + two.missing.size(), 2u);
+  EXPECT_TRUE(two.Has("crown"));
+}
+
+TEST(Landmarks, RejectsWhatCannotBeAStandingPerson) {
+  PointCloud few;
+  few.points = Eigen::MatrixX3d::Random(100, 3);
+  EXPECT_THROW(DetectLandmarks(LandmarkOptions{}, few), InputError);
+  PointCloud metres;  // a body left in metres: 1.7 units tall
+  metres.points = Eigen::MatrixX3d::Random(5000, 3) * 0.85;
+  EXPECT_THROW(DetectLandmarks(LandmarkOptions{}, metres), InputError);
+}
+
+}  // namespace
+}  // namespace bespoke
