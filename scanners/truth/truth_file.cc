@@ -9,8 +9,11 @@ nlohmann::json TruthDocument(const Body& body, const Catalogue& catalogue,
   using nlohmann::json;
   json doc = {{"format", "bespoke-measurements"}, {"version", 1}, {"units", "mm"},
               {"frame", "body"},                  {"source", "truth"}, {"model", body.model}};
-  if (const auto seed = body.parameters.find("seed"); seed != body.parameters.end())
-    doc["seed"] = static_cast<std::uint64_t>(seed->second);
+  // The subject's seed: a seeded parametric body reports seed 0 (the size
+  // values are set) and the seed they were drawn from in drawn_from_seed.
+  const auto seed = body.parameters.find("seed"), drawn = body.parameters.find("drawn_from_seed");
+  if (drawn != body.parameters.end() && drawn->second > 0) doc["seed"] = static_cast<std::uint64_t>(drawn->second);
+  else if (seed != body.parameters.end()) doc["seed"] = static_cast<std::uint64_t>(seed->second);
   doc["parameters"] = json::object();
   for (const auto& [name, value] : body.parameters) doc["parameters"][name] = value;
   doc["landmarks"] = json::object();

@@ -32,6 +32,7 @@ TEST(TruthFile, ContractsSchemaWithDatumPointsAndGeometry) {
   EXPECT_EQ(doc["frame"], "body");
   EXPECT_EQ(doc["source"], "truth");
   EXPECT_EQ(doc["model"], "parametric");
+  EXPECT_EQ(doc["seed"], 4);  // the seed drawn from, not the options' 0 after the draw
   EXPECT_EQ(doc["parameters"]["waist_girth_analytic_mm"].get<double>(), body.parameters.at("waist_girth_analytic_mm"));
   EXPECT_EQ(doc["mesh"]["vertices"], body.mesh.num_vertices());
   ASSERT_EQ(doc["landmarks"].size(), body.landmarks.size());
