@@ -136,7 +136,7 @@ std::string AccuracyHtml(const AccuracyReport& report, const std::vector<std::st
       "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" + Escape(report.title) +
       "</title>\n<style>body{font-family:sans-serif;margin:2em;max-width:1400px}"
       "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:3px 8px;"
-      "text-align:right}td:nth-child(2),th{text-align:left}.pass{background:#dfd}.fail{background:#fdd}"
+      "text-align:right}td:nth-child(-n+4),th{text-align:left}.pass{background:#dfd}.fail{background:#fdd}"
       ".na{background:#eee}img{max-width:100%}pre{background:#f6f6f6;padding:1em}</style></head><body>\n";
   html += "<h1>" + Escape(report.title) + "</h1>\n<p>Created " + Escape(report.created_utc) + "; " +
           std::to_string(report.summary.subjects) + " subjects compared, " +

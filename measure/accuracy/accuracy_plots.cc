@@ -60,6 +60,13 @@ void StripChart(const std::vector<const MeasurementSummary*>& measurements, IsoC
   chart.series = {subjects, ci, bias,
                   HorizontalLine(tolerance, 0.5, x1, "ISO 20685-1 limit +/-" + FormatNumber(tolerance, 0) + " mm"),
                   HorizontalLine(-tolerance, 0.5, x1, "")};
+  // The y range fits the subjects and the limits; a wider CI (few subjects)
+  // runs off the chart (its numbers are in the table).
+  double lo = -tolerance, hi = tolerance;
+  for (double y : subjects.y) lo = std::min(lo, y), hi = std::max(hi, y);
+  const double pad = 0.08 * (hi - lo);
+  chart.y_min = lo - pad;
+  chart.y_max = hi + pad;
   chart.x_min = 0.5;
   chart.x_max = x1;
   chart.width_px = std::max(600, 60 * static_cast<int>(measurements.size()) + 200);
