@@ -8,6 +8,7 @@ namespace bespoke {
 CommandRunner SetupVersionCommand(CLI::App& app);
 CommandRunner SetupInfoCommand(CLI::App& app);
 CommandRunner SetupCleanCommand(CLI::App& app);
+CommandRunner SetupMeasureCommand(CLI::App& app);
 CommandRunner SetupRunCommand(CLI::App& app);
 CommandRunner SetupBatchCommand(CLI::App& app);
 CommandRunner SetupBatchMergeCommand(CLI::App& app);
@@ -29,6 +30,8 @@ const std::vector<Command>& AllCommands() {
        &SetupInfoCommand},
       {"clean", "Clean a scan and put it in the body frame (outliers, floor, clusters, normals)",
        &SetupCleanCommand},
+      {"measure", "Measure a scan: datum points, girths and lengths to JSON/CSV/Valentina/FreeSewing (+ a render)",
+       &SetupMeasureCommand},
       {"run", "The whole job for one scan (clean, measure, fit a pattern) into one folder",
        &SetupRunCommand},
       {"batch", "Run every scan of a folder or manifest, each in its own worker process",

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -109,9 +110,12 @@ class PathCache {
   }
   bool empty() const { return pending_.empty(); }
 
-  // Datum points in a scan hole (farther than tolerance_mm from every scan
-  // point, at most max_bridge_mm) start their paths at the nearest scan
-  // point; the straight bridge to the datum point is added to the length.
+  // A datum point in a scan hole (farther than tolerance_mm from every scan
+  // point, at most max_bridge_mm) is reached by the shortest surface path
+  // plus a straight bridge across the hole: from the other end's distance
+  // field, the scan point p within max_bridge_mm of the datum point that
+  // minimises geodesic(other, p) + |p - datum| (a tape bridging the crotch).
+  // With both ends in holes, each bridges from its nearest scan point.
   void Solve(CloudGeodesics& geodesics, const LandmarkSet& set, double tolerance_mm, double max_bridge_mm,
              Progress* progress) {
     for (const auto& pair : pending_)
@@ -120,9 +124,9 @@ class PathCache {
         const Vec& x = set.points.at(name).position_mm;
         double d2 = 0;
         const int nearest = geodesics.grid().index().Nearest(x, &d2);
-        End end{x, 0.0};
+        End end{x, 0.0, false};
         if (nearest >= 0 && std::sqrt(d2) > tolerance_mm && std::sqrt(d2) <= max_bridge_mm)
-          end = {geodesics.grid().index().point(nearest), std::sqrt(d2)};
+          end = {geodesics.grid().index().point(nearest), std::sqrt(d2), true};
         ends_[name] = end;
       }
     ProgressBegin(progress, "geodesics", static_cast<std::int64_t>(pending_.size()));
@@ -138,13 +142,18 @@ class PathCache {
         const std::string& target = it->first == source ? it->second : it->first;
         Entry entry;
         try {
-          const End& from = ends_.at(source);
-          const End& to = ends_.at(target);
+          End from = ends_.at(source), to = ends_.at(target);
+          const bool flip = from.in_hole && !to.in_hole;  // solve from the end on the scan
+          if (flip) std::swap(from, to);
+          if (to.in_hole && !from.in_hole) to = BestExit(geodesics, from, set.points.at(flip ? source : target).position_mm, max_bridge_mm);
           CloudGeodesicPath p = geodesics.Between(from.start, to.start);
           entry.length_mm = p.length_mm + from.bridge_mm + to.bridge_mm;
+          const Vec& a = set.points.at(flip ? target : source).position_mm;
+          const Vec& b = set.points.at(flip ? source : target).position_mm;
           Eigen::MatrixX3d points(p.points.rows() + 2, 3);
-          points << set.points.at(source).position_mm.transpose(), p.points, set.points.at(target).position_mm.transpose();
-          entry.points = it->first == source ? points : Eigen::MatrixX3d(points.colwise().reverse());
+          points << a.transpose(), p.points, b.transpose();  // from `a` to `b`
+          const bool forward = (it->first == source) != flip;  // stored from pair.first
+          entry.points = forward ? points : Eigen::MatrixX3d(points.colwise().reverse());
         } catch (const InputError& e) {
           entry.error = e.what();
         }
@@ -173,7 +182,23 @@ class PathCache {
   struct End {
     Vec start;              // where the path starts on the scan
     double bridge_mm = 0;   // straight bridge from there to the datum point
+    bool in_hole = false;
   };
+
+  static End BestExit(CloudGeodesics& geodesics, const End& from, const Vec& datum, double max_bridge_mm) {
+    const CloudDistanceField field = geodesics.DistancesFrom(from.start);
+    const Eigen::MatrixX3d& points = geodesics.grid().index().points();
+    End best{datum, 0, true};
+    double cost = std::numeric_limits<double>::infinity();
+    if (field.point_distance_mm.size() != points.rows()) return best;
+    for (Eigen::Index i = 0; i < points.rows(); ++i) {
+      const double bridge = (points.row(i).transpose() - datum).norm();
+      if (bridge > max_bridge_mm || !std::isfinite(field.point_distance_mm(i))) continue;
+      if (field.point_distance_mm(i) + bridge < cost)
+        cost = field.point_distance_mm(i) + bridge, best = {points.row(i).transpose(), bridge, true};
+    }
+    return best;
+  }
   std::set<std::pair<std::string, std::string>> pending_;
   std::map<std::pair<std::string, std::string>, Entry> solved_;
   std::map<std::string, End> ends_;

@@ -107,21 +107,19 @@ TEST(Measure, VirtualScanWithTrueLandmarksMatchesTheReference) {
     std::printf("%-20s %-7s truth %8.1f scan %8.1f diff %+6.1f mm (tol %.0f)%s\n", truth.name.c_str(),
                 ToString(truth.kind).c_str(), truth.value_mm, m->value_mm, diff, Tolerance(truth), flags.c_str());
     // The truth's crotch lies in the unscanned crease between the legs,
-    // 48 mm from the scan: lengths through it are flagged, not held to a
-    // tolerance (an automatic crotch is placed on the scan).
-    if (Has(m->flags, "datum_off_scan")) {
-      EXPECT_NE(std::find(m->datum.begin(), m->datum.end(), "crotch"), m->datum.end()) << truth.name;
-      continue;
-    }
+    // 48 mm from the scan: lengths through it are flagged and bridged across
+    // the hole; held to 10 mm (measured: -3, -2, +8 mm), not ISO's 5 mm.
+    const bool bridged = Has(m->flags, "datum_off_scan");
+    if (bridged) EXPECT_NE(std::find(m->datum.begin(), m->datum.end(), "crotch"), m->datum.end()) << truth.name;
     ++compared;
-    if (std::abs(diff) <= Tolerance(truth)) ++within;
+    if (std::abs(diff) <= (bridged ? 10.0 : Tolerance(truth))) ++within;
     else misses.push_back(truth.name);
   }
   std::string missed;
   for (const std::string& s : misses) missed += " " + s;
   std::printf("%d of %d within tolerance; outside:%s\n", within, compared, missed.c_str());
   EXPECT_EQ(result.measurements.size() + result.skipped.size(), Catalogue::Builtin().measurements().size());
-  EXPECT_GE(compared, 47);
+  EXPECT_GE(compared, 50);
   EXPECT_EQ(within, compared) << "outside:" << missed;
 }
 
