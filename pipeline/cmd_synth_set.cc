@@ -9,7 +9,7 @@
 // lists the subjects, seeds, settings and counts. With --preview, the first
 // K subjects' bodies and scans are drawn side by side into one PNG. With
 // --skip-reference, truth.json holds the datum points but no reference
-// measurements (those need exact geodesics: minutes per body).
+// measurements (exact geodesics and sections: seconds per body, docs/oracle.md).
 // --param k=v sets body sizes or model values after the seeded draw, for
 // every subject (scanners/synth/synth_body.h).
 #include <CLI/CLI.hpp>
@@ -93,7 +93,7 @@ CommandRunner SetupSynthSetCommand(CLI::App& app) {
   app.add_option("--preview-count", o->preview_count, "Subjects in the preview (default 4)");
   app.add_option("--param", o->params, "Body size or model value after the seeded draw, name=value (repeatable)");
   app.add_flag("--skip-reference", o->skip_reference,
-               "Write datum points only, no reference measurements (exact geodesics take minutes per body)");
+               "Write datum points only, no reference measurements (faster)");
   AddScanSimOptions(app, &o->scanner, /*seed_option=*/false);  // each scan takes its subject's seed
   return [o](const GlobalOptions& global) {
     o->Check();

@@ -7,10 +7,12 @@
 // the horizontal section of the arm separates from the trunk") was run on a
 // spread of generated bodies, and the vertex with the smallest median
 // distance to the rule's answer over those bodies was kept. The test
-// makehuman_landmarks_test.cc re-runs the analysis and checks every table
-// vertex stays near the rule's answer on other bodies; run it with
-// BESPOKE_PRINT_ANALYSIS=1 to print the whole comparison (and the table the
-// analysis would choose today).
+// MakeHumanLandmarks.TableStaysNearTheRulesOnUnseenBodies
+// (makehuman_test.cc) re-runs the analysis on seeds the table was not chosen
+// on and checks every table vertex stays within 100 mm of its rule's answer,
+// with a median under 20 mm (measured: 3.5 mm on seeds 101 and 202).
+// Exception: GenerateMakeHumanBody replaces the crown by each body's highest
+// vertex.
 #ifndef BESPOKE_SCANNERS_MAKEHUMAN_MAKEHUMAN_LANDMARKS_H_
 #define BESPOKE_SCANNERS_MAKEHUMAN_MAKEHUMAN_LANDMARKS_H_
 
