@@ -16,11 +16,11 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Elbow position as a share of the shoulder-point-to-wrist distance along
 // the arm. Adult survey proportions (upper arm, acromion-radiale, about
 // 0.186 of stature; forearm, radiale-stylion, about 0.146) give 0.56 to the
-// elbow joint's line; the olecranon sits a little above it, and 0.52
-// matched both truths best (MakeHuman and parametric bodies were 20-30 mm
-// too low at 0.56). The scan has no reliable elbow shape cue when the arm
+// elbow joint's line; the olecranon sits a little above it, and 0.49
+// matched the MakeHuman truth best (20-30 mm too low at 0.56, 17-30 mm at
+// 0.52). The scan has no reliable elbow shape cue when the arm
 // is straight.
-constexpr double kElbowShare = 0.52;
+constexpr double kElbowShare = 0.49;
 constexpr double kStyloidPastNarrowest_mm = 15;
 
 struct ArmFrame {
