@@ -108,9 +108,22 @@ ProjectedPath ProjectPolyline(const MeshSurface& surface, const Eigen::MatrixX3d
     if (plane.squaredNorm() == 0)  // straight: the normal section through the chord
       plane = (b.point - a.point).cross(surface.NormalAt(a) + surface.NormalAt(b));
     bool fell_back = false;
-    out.cumulative[static_cast<size_t>(i)] =
-        out.cumulative[static_cast<size_t>(i - 1)] +
-        CutBetween(surface, a, b, plane, max_faces, keep, &fell_back);
+    const size_t kept = keep ? keep->size() : 0;
+    double piece = CutBetween(surface, a, b, plane, max_faces, keep, &fell_back);
+    // A foot can land on the wrong side of a thin part (an ear, a finger):
+    // a projected piece much longer or shorter than its floating segment is
+    // not the projection of that segment; the floating segment's length
+    // stands in.
+    const double floating = (sample(i) - sample(i - 1)).norm();
+    if (piece > 1.5 * floating + 1e-12 || 1.5 * piece < floating - 1e-12) {
+      fell_back = true;
+      piece = floating;
+      if (keep) {
+        keep->resize(kept);
+        keep->push_back(b.point);
+      }
+    }
+    out.cumulative[static_cast<size_t>(i)] = out.cumulative[static_cast<size_t>(i - 1)] + piece;
     out.fallbacks += fell_back;
   }
   out.length = out.cumulative.back();

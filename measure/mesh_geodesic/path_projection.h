@@ -15,7 +15,10 @@
 // the plane through the chord and the surface normal is used (for a geodesic
 // the two coincide). Across two faces the trace is the straight unfolding.
 // A walk that hits the mesh boundary or needs more than `max_faces` faces
-// falls back to the straight chord between the feet (counted).
+// falls back to the straight chord between the feet (counted). A piece more
+// than 1.5 times longer or shorter than its floating segment (a foot on the
+// wrong side of a thin part: an ear, a finger) counts as the floating
+// segment (counted).
 //
 // Units: the mesh's. Cost: O(faces crossed) per segment.
 #ifndef BESPOKE_MEASURE_MESH_GEODESIC_PATH_PROJECTION_H_
@@ -34,7 +37,7 @@ struct ProjectedPath {
   double length = 0;  // cumulative.back()
   // The projected polyline (#K x 3, on the faces), only when asked for.
   Eigen::MatrixX3d points;
-  std::int64_t fallbacks = 0;  // segments measured as chords (walk failed)
+  std::int64_t fallbacks = 0;  // segments measured as chords (walk failed or too long)
 };
 
 // Projects `samples` (#S x 3, S >= 1) with locality hints `hints` (#S mesh
