@@ -82,8 +82,6 @@ TEST(BodyGeodesics, DatumPointLengthsOnAVirtualScanMatchExactMeshGeodesics) {
         ++compared;
       }
     } catch (const InputError& e) {
-      // A datum point in a region no sensor sees (the crotch) may lie on no
-      // piece of the scan connected to the rest.
       std::printf("%-22s -> %-22s not measurable on the scan: %s\n", from.c_str(), to.c_str(),
                   e.what());
       ++unreachable;
@@ -94,7 +92,14 @@ TEST(BodyGeodesics, DatumPointLengthsOnAVirtualScanMatchExactMeshGeodesics) {
   std::printf("%d segments with both ends on scanned skin: mean |diff| %.2f mm, max %.2f mm\n",
               compared, sum / std::max(1, compared), worst);
   EXPECT_GE(compared, 15);
-  EXPECT_LE(unreachable, 3);  // the crotch's segments
+  // The crotch datum lies in the scan's occlusion hole, 25 mm from the
+  // nearest scan point: it is accepted as unscanned (flagged) and the hole
+  // spanned by chords to its rim. Measured: +2.0, +4.9 and +18.6 mm on its
+  // three segments (the last down the inner leg, where the thighs nearly
+  // touch); 25 mm guards against routing round a leg (+179 mm when the point
+  // was merely snapped to the nearest rim point).
+  EXPECT_EQ(unreachable, 0);
+  EXPECT_LE(worst_all, 25.0);
   EXPECT_LE(sum / compared, 2.0);  // mm, the target
   EXPECT_LE(worst, 5.0);           // mm (ISO 20685-1 allows 5 mm for segment lengths)
 }

@@ -15,6 +15,8 @@ void CloudGeodesicsOptions::Check() const {
   polish_flow.Check();
   if (!(max_snap_distance_mm >= 0) || !std::isfinite(max_snap_distance_mm))
     throw InputError("geodesics: max_snap_distance_mm must be >= 0");
+  if (!(max_hole_snap_distance_mm >= 0) || !std::isfinite(max_hole_snap_distance_mm))
+    throw InputError("geodesics: max_hole_snap_distance_mm must be >= 0");
   if (!(polish_spacing_mm >= 0) || !std::isfinite(polish_spacing_mm))
     throw InputError("geodesics: polish_spacing_mm must be >= 0");
 }
@@ -40,12 +42,42 @@ CloudGeodesics::CloudGeodesics(const CloudGeodesicsOptions& options,
 
 CloudGeodesics::~CloudGeodesics() = default;
 
+// Whether `x` (`distance` from the nearest scan point, in node `node`) lies
+// in a hole of the scan rather than in the air off the skin or inside the
+// body: either the scan points of the node's piece around it (within
+// `distance` plus a margin) lie on all sides of it - the mean of the unit
+// directions to them is short - or it lies along the surface from the
+// nearest scanned skin (within 20 degrees of that node's tangent plane), as
+// a point in a crease no sensor saw (the crotch, an armpit) does. A point in
+// the air or inside the body lies along the normal and sees the scan on one
+// side (mean length 0.7-1).
+bool CloudGeodesics::InUnscannedRegion(const Eigen::Vector3d& x, double distance, int node) const {
+  const TangentPlane plane = grid_.surface(node).PlaneAt(grid_.site(node));
+  const Eigen::Vector3d away = x - plane.point;
+  if (away.norm() > 0 && std::abs(plane.normal.dot(away)) <= 0.35 * away.norm()) return true;  // 20 deg
+  const int component = grid_.component(node);
+  const double radius = distance + std::max(2 * grid_.cell_size_mm(), 0.5 * distance);
+  std::vector<int> near;
+  std::vector<double> d2;
+  grid_.index().Knn(x, 1024, &near, &d2);
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int count = 0;
+  for (size_t i = 0; i < near.size(); ++i) {
+    if (d2[i] > radius * radius || d2[i] <= 0) continue;
+    if (grid_.component(grid_.node_of_point(near[i])) != component) continue;
+    sum += (grid_.index().points().row(near[i]).transpose() - x) / std::sqrt(d2[i]);
+    ++count;
+  }
+  return count >= 20 && sum.norm() / count < 0.5;
+}
+
 std::pair<Eigen::Vector3d, int> CloudGeodesics::Snap(const Eigen::Vector3d& x,
-                                                     const std::string& what,
-                                                     int component) const {
+                                                     const std::string& what, int component,
+                                                     double* snap_mm, bool* unscanned) const {
   if (!x.allFinite()) throw InputError(what + ": coordinates must be finite numbers");
   const double limit = options_.max_snap_distance_mm > 0 ? options_.max_snap_distance_mm
                                                          : std::max(10.0, 3 * grid_.cell_size_mm());
+  const double hole_limit = std::max(limit, options_.max_hole_snap_distance_mm);
   double distance = 0;
   int node = grid_.LocateNode(x, &distance, component);
   if (component < 0) {
@@ -53,21 +85,27 @@ std::pair<Eigen::Vector3d, int> CloudGeodesics::Snap(const Eigen::Vector3d& x,
     if (sizes[static_cast<size_t>(grid_.component(node))] < 0.05 * sizes[0]) {
       double main_distance = 0;
       const int main = grid_.LocateNode(x, &main_distance, 0);
-      if (grid_.component(main) == 0 && main_distance <= limit) {
+      if (grid_.component(main) == 0 && main_distance <= hole_limit) {
         node = main;
         distance = main_distance;
       }
     }
   }
-  if (distance > limit) {
-    char text[160];
+  const bool hole = distance > limit && distance <= hole_limit &&
+                    InUnscannedRegion(x, distance, node);
+  if (distance > limit && !hole) {
+    char text[240];
     std::snprintf(text, sizeof text,
-                  " is %.1f mm from the nearest scan point (at most %.1f mm allowed); "
-                  "give coordinates on the surface, in the scan's frame and units (mm)",
-                  distance, limit);
+                  " is %.1f mm from the nearest scan point (at most %.1f mm allowed, or %.1f mm "
+                  "inside an unscanned region the scan surrounds); give coordinates on the "
+                  "surface, in the scan's frame and units (mm)",
+                  distance, limit, hole_limit);
     throw InputError(what + " " + Format(x) + text);
   }
-  return {grid_.surface(node).PlaneAt(x).point, node};
+  const Eigen::Vector3d point = grid_.surface(node).PlaneAt(hole ? grid_.site(node) : x).point;
+  if (snap_mm) *snap_mm = (point - x).norm();
+  if (unscanned) *unscanned = hole;
+  return {point, node};
 }
 
 Propagation& CloudGeodesics::PropagationFrom(const Eigen::Vector3d& source, int node) {
@@ -76,10 +114,37 @@ Propagation& CloudGeodesics::PropagationFrom(const Eigen::Vector3d& source, int 
   return *cached_;
 }
 
+std::vector<int> CloudGeodesics::RimNodes(const Eigen::Vector3d& x, double distance,
+                                          int node) const {
+  const double radius = distance + std::max(2 * grid_.cell_size_mm(), 0.5 * distance);
+  std::vector<int> near, rim = {node};
+  std::vector<double> d2;
+  grid_.index().Knn(x, 4096, &near, &d2);
+  for (size_t i = 0; i < near.size() && d2[i] <= radius * radius; ++i) {
+    const int n = grid_.node_of_point(near[i]);
+    if (grid_.component(n) == grid_.component(node) &&
+        std::find(rim.begin(), rim.end(), n) == rim.end())
+      rim.push_back(n);
+  }
+  return rim;
+}
+
+Propagation& CloudGeodesics::HolePropagationFrom(const Eigen::Vector3d& source, double distance,
+                                                 int node) {
+  if (!cached_ || cached_->source_node() != node || cached_->source() != source)
+    cached_ = std::make_unique<Propagation>(options_.propagation, grid_, source,
+                                            RimNodes(source, distance, node));
+  return *cached_;
+}
+
 CloudDistanceField CloudGeodesics::DistancesFrom(const Eigen::Vector3d& source,
                                                  Progress* progress) {
-  const auto [point, node] = Snap(source, "source");
-  Propagation& propagation = PropagationFrom(point, node);
+  double snap = 0;
+  bool hole = false;
+  const auto [snapped, node] = Snap(source, "source", -1, &snap, &hole);
+  const Eigen::Vector3d point = hole ? source : snapped;
+  Propagation& propagation =
+      hole ? HolePropagationFrom(source, snap, node) : PropagationFrom(point, node);
   propagation.Run(-1, progress);
   field_source_ = point;
   CloudDistanceField field;
@@ -113,8 +178,10 @@ Eigen::VectorXd CloudGeodesics::DistancesAt(const Eigen::MatrixX3d& points) {
 }
 
 CloudGeodesicPath CloudGeodesics::Between(const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
-  const auto [a, node_a] = Snap(from, "from");
-  const auto [b, node_b] = Snap(to, "to", grid_.component(node_a));
+  double snap_a = 0, snap_b = 0;
+  bool hole_a = false, hole_b = false;
+  const auto [a, node_a] = Snap(from, "from", -1, &snap_a, &hole_a);
+  const auto [b, node_b] = Snap(to, "to", grid_.component(node_a), &snap_b, &hole_b);
   if (grid_.component(node_a) != grid_.component(node_b)) {
     const auto& sizes = grid_.component_points();
     throw InputError(
@@ -124,12 +191,18 @@ CloudGeodesicPath CloudGeodesics::Between(const Eigen::Vector3d& from, const Eig
         std::to_string(sizes[static_cast<size_t>(grid_.component(node_b))]) +
         " points) that no surface path connects; is one of them in an unscanned region?");
   }
+  if (hole_a || hole_b) return BetweenAcrossHoles(from, to, node_a, node_b, snap_a, snap_b, hole_a,
+                                                  hole_b);
   Propagation& propagation = PropagationFrom(a, node_a);
   propagation.Run(node_b);
   if (!propagation.settled(node_b))
     throw InputError("from " + Format(from) + " to " + Format(to) +
                      ": no path over the scanned surface connects the two points");
   CloudGeodesicPath result;
+  result.from_snap_mm = snap_a;
+  result.to_snap_mm = snap_b;
+  result.from_unscanned = hole_a;
+  result.to_unscanned = hole_b;
   result.nodes_settled = propagation.stats().settled;
   result.propagated_length_mm = propagation.DistanceNear(node_b, b);
   std::vector<int> hints;
@@ -168,6 +241,62 @@ CloudGeodesicPath CloudGeodesics::Between(const Eigen::Vector3d& from, const Eig
   FillMissingPlanes(grid_, path, &hints, &planes);
   result.length_mm = SurfaceCurveLength(path, planes);
   result.points = std::move(path);
+  return result;
+}
+
+}  // namespace bespoke
+
+namespace bespoke {
+
+// Between() when an end lies in an unscanned region. Geodesic distance is
+// symmetric, so the wavefront starts at the end in a hole (seeded over its
+// rim, Propagation's hole constructor); when the other end is in a hole too,
+// the answer is the best of its rim nodes plus the chord into it. No final
+// flow: it would pull the chord across the hole onto the rim's surfaces.
+CloudGeodesicPath CloudGeodesics::BetweenAcrossHoles(const Eigen::Vector3d& from,
+                                                     const Eigen::Vector3d& to, int node_a,
+                                                     int node_b, double snap_a, double snap_b,
+                                                     bool hole_a, bool hole_b) {
+  if (!hole_a) {  // start from the end in the hole, then reverse the path
+    CloudGeodesicPath back = BetweenAcrossHoles(to, from, node_b, node_a, snap_b, snap_a, true,
+                                                false);
+    back.points = back.points.colwise().reverse().eval();
+    std::swap(back.from_snap_mm, back.to_snap_mm);
+    std::swap(back.from_unscanned, back.to_unscanned);
+    return back;
+  }
+  Propagation& propagation = HolePropagationFrom(from, snap_a, node_a);
+  std::vector<int> targets = {node_b};
+  Eigen::Vector3d end = to;
+  if (hole_b) {
+    targets = RimNodes(to, snap_b, node_b);
+  } else {
+    end = grid_.surface(node_b).PlaneAt(to).point;
+  }
+  int best = -1;
+  double best_length = std::numeric_limits<double>::infinity();
+  for (const int target : targets) {
+    propagation.Run(target);
+    if (!propagation.settled(target)) continue;
+    const double length = hole_b ? propagation.distance_mm(target) + (grid_.site(target) - to).norm()
+                                 : propagation.DistanceNear(target, end);
+    if (length < best_length) best_length = length, best = target;
+  }
+  if (best < 0)
+    throw InputError("from " + Format(from) + " to " + Format(to) +
+                     ": no path over the scanned surface connects the two points");
+  CloudGeodesicPath result;
+  result.length_mm = best_length;
+  result.propagated_length_mm = best_length;
+  result.nodes_settled = propagation.stats().settled;
+  Eigen::MatrixX3d path = propagation.Path(best);
+  path.conservativeResize(path.rows() + 1, 3);
+  path.row(path.rows() - 1) = end.transpose();
+  result.points = std::move(path);
+  result.from_snap_mm = snap_a;
+  result.to_snap_mm = snap_b;
+  result.from_unscanned = hole_a;
+  result.to_unscanned = hole_b;
   return result;
 }
 

@@ -24,6 +24,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "measure/geodesic/cloud_grid.h"
 #include "measure/geodesic/propagation.h"
@@ -34,8 +35,16 @@ struct CloudGeodesicsOptions {
   CloudGridOptions grid;
   PropagationOptions propagation;
   // Query points farther than this from the nearest scan point are rejected;
-  // 0 (default) = the larger of 3 cell sizes and 10 mm.
+  // 0 (default) = the larger of 3 cell sizes and 10 mm...
   double max_snap_distance_mm = 0;
+  // ...unless they lie in an unscanned region: a point up to this far from
+  // the scan that lies ALONG the surface from the nearest scanned skin
+  // (within 20 degrees of its tangent plane) or that the scan surrounds, as
+  // in the crotch or an armpit no sensor saw - not along the normal, as a
+  // point in the air off the skin or inside the body - is snapped to the
+  // nearest scanned skin and flagged (CloudGeodesicPath::from_unscanned).
+  // Default 60 mm; 0 = never.
+  double max_hole_snap_distance_mm = 60;
   // Point to point: flow the whole path at the end (default true).
   bool polish = true;
   // Sample spacing of that final flow; 0 (default) = half a cell.
@@ -59,6 +68,12 @@ struct CloudGeodesicPath {
   int polish_iterations = 0;
   bool polish_rejected = false;   // the final flow cut across a gap and was undone
   std::int64_t nodes_settled = 0;   // size of the propagation behind the answer
+  // How far each query point was moved onto the scanned surface (mm), and
+  // whether it lay in an unscanned region (farther than max_snap_distance_mm):
+  // then the length runs from the nearest scanned skin, not from the point,
+  // and a measurement built on it should say so.
+  double from_snap_mm = 0, to_snap_mm = 0;
+  bool from_unscanned = false, to_unscanned = false;
 };
 
 class CloudGeodesics {
@@ -82,15 +97,25 @@ class CloudGeodesics {
   Eigen::VectorXd DistancesAt(const Eigen::MatrixX3d& points);
 
   // `x` moved onto the surface and its node; InputError (naming `what`, e.g.
-  // "--from") when not finite or too far from the scan. The node is taken in
+  // "--from") when not finite or too far from the scan (see
+  // max_snap_distance_mm and max_hole_snap_distance_mm). The node is taken in
   // connected component `component` when one is near enough; with -1, in the
   // nearest point's component unless that is a small island (under 5 % of
-  // the largest component's points) and the largest is near enough.
+  // the largest component's points, e.g. a stray patch in the crotch) and the
+  // largest is near enough. `snap_mm`: distance from `x` to the returned
+  // point; `unscanned`: whether `x` was accepted as lying in an unscanned region.
   std::pair<Eigen::Vector3d, int> Snap(const Eigen::Vector3d& x, const std::string& what,
-                                       int component = -1) const;
+                                       int component = -1, double* snap_mm = nullptr,
+                                       bool* unscanned = nullptr) const;
 
  private:
   Propagation& PropagationFrom(const Eigen::Vector3d& source, int node);
+  Propagation& HolePropagationFrom(const Eigen::Vector3d& source, double distance, int node);
+  std::vector<int> RimNodes(const Eigen::Vector3d& x, double distance, int node) const;
+  CloudGeodesicPath BetweenAcrossHoles(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                                       int node_a, int node_b, double snap_a, double snap_b,
+                                       bool hole_a, bool hole_b);
+  bool InUnscannedRegion(const Eigen::Vector3d& x, double distance, int node) const;
 
   CloudGeodesicsOptions options_;
   CloudGrid grid_;

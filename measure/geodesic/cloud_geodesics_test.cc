@@ -132,6 +132,41 @@ TEST(CloudGeodesics, BadQueriesAreInputErrors) {
   EXPECT_THROW(CloudGeodesics(bad, cloud), InputError);
 }
 
+// A query point inside a large unscanned patch (as the crotch on a body
+// scan) is accepted and flagged, the hole spanned by chords to its rim; a
+// point as far off the surface in the air is refused.
+TEST(CloudGeodesics, PointsInAnUnscannedHoleAreReachedAcrossIt) {
+  const double r = 80;
+  const Eigen::Vector3d centre = OnSphere(r, 0.0, 0.0);
+  const Eigen::MatrixX3d cloud =
+      testing::RemoveBall(testing::SampleSphere({2.0, 0.0, 5}, r), centre, 30);
+  CloudGeodesics geodesics({}, cloud);
+  const Eigen::Vector3d far = OnSphere(r, 2.0, 0.3);
+  const CloudGeodesicPath path = geodesics.Between(centre, far);
+  EXPECT_TRUE(path.from_unscanned);
+  EXPECT_FALSE(path.to_unscanned);
+  EXPECT_NEAR(path.from_snap_mm, 30, 4);  // mm: the rim, about 30 mm from the centre
+  EXPECT_LT(path.to_snap_mm, 1.0);
+  // The hole is spanned by straight chords from the point to its rim, so the
+  // length is short only by chord vs arc across the hole (30.2 vs 30 mm).
+  const double exact = testing::SphereDistance(r, centre, far);
+  EXPECT_NEAR(path.length_mm, exact, 1.5);
+  EXPECT_LT((path.points.row(0).transpose() - centre).norm(), 1e-9);  // starts at the point
+  // Either way round, and with both ends in holes (a second hole at `far`).
+  EXPECT_NEAR(geodesics.Between(far, centre).length_mm, path.length_mm, 1.0);
+  const CloudGeodesicPath both =
+      CloudGeodesics({}, testing::RemoveBall(cloud, far, 25)).Between(centre, far);
+  EXPECT_TRUE(both.from_unscanned && both.to_unscanned);
+  EXPECT_NEAR(both.length_mm, exact, 2.5);
+  // 30 mm off the skin, in the air beside the hole: not surrounded, refused.
+  EXPECT_THROW(geodesics.Between(OnSphere(r + 30, 0.6, 0.0), far), InputError);
+  EXPECT_THROW(geodesics.Between(OnSphere(r + 30, 0.0, 0.0), far), InputError);
+  CloudGeodesicsOptions never;
+  never.max_hole_snap_distance_mm = 0;
+  CloudGeodesics strict(never, cloud);
+  EXPECT_THROW(strict.Between(centre, far), InputError);
+}
+
 TEST(CloudGeodesics, DistanceFieldOnTheSphere) {
   const double r = 80;
   const Eigen::MatrixX3d cloud = testing::SampleSphere({2.0, 0.0, 11}, r);

@@ -1,7 +1,10 @@
 // geodesic_bench: speed, memory and accuracy of the point-cloud geodesics
 // (thesis Algorithms 4-5) against CGAL's exact geodesics, in one run.
 //
-//   build/measure/geodesic_bench [--shared DIR] [--no-cgal] [--quick]
+//   build/measure/geodesic_bench [--shared DIR] [--no-cgal] [--quick] [--body-only] [--dump DIR]
+//   (--body-only: the 116k body and generated-scan field rows alone; --dump DIR:
+//   per-vertex cloud and exact distances of those rows as DIR/<name>.txt, to
+//   see where the errors are)
 //
 // Rows (each algorithm runs in a forked child so its peak memory is its own):
 //   - single source to all destinations on clouds made of the vertices of the
@@ -48,6 +51,7 @@ double Now() {
 // CPU seconds (user + system) of the last child run: the load of other jobs
 // on the machine inflates wall times, much less CPU times.
 double g_child_cpu_s = 0;
+std::string g_dump;  // --dump DIR: per-vertex distances of the mesh rows
 
 // Runs `work` in a child process; returns its numbers, and its peak resident
 // memory in MB through `peak_mb` (its CPU time in g_child_cpu_s).
@@ -212,6 +216,16 @@ Eigen::VectorXd MeshRow(const std::string& name, const TriangleMesh& mesh, bool 
   }
   PrintRow(name, mesh.num_vertices(), cloud[2], cloud[0], cloud[1], cpu, peak, cgal_s, cgal_cpu,
            cgal_peak, Compare(Tail(cloud, 3), exact));
+  if (!g_dump.empty()) {  // per vertex: x y z cloud_mm exact_mm, to find where errors are
+    const std::string file = g_dump + "/" + name.substr(0, name.find(' ')) + ".txt";
+    if (FILE* f = std::fopen(file.c_str(), "w")) {
+      const Eigen::VectorXd c = Tail(cloud, 3);
+      for (Eigen::Index v = 0; v < mesh.num_vertices(); ++v)
+        std::fprintf(f, "%.3f %.3f %.3f %.4f %.4f\n", mesh.vertices(v, 0), mesh.vertices(v, 1),
+                     mesh.vertices(v, 2), c[v], exact[v]);
+      std::fclose(f);
+    }
+  }
   return exact;
 }
 
@@ -224,7 +238,7 @@ TriangleMesh LoadMesh(const std::filesystem::path& file, LengthUnit unit) {
   return mesh.mesh;
 }
 
-void GeneratedScanRows(bool cgal, bool quick) {
+void GeneratedScanRows(bool cgal, bool quick, bool field_only) {
   ParametricBodyOptions shape;  // the average woman, girth rings coarser than default
   shape.girth_ring_segments = 64;
   shape.max_girth_deficit_mm = 1.0;
@@ -265,6 +279,17 @@ void GeneratedScanRows(bool cgal, bool quick) {
               static_cast<long long>(std::count(seen.begin(), seen.end(), true)));
   PrintRow("generated scan, field", cloud.rows(), field[2], field[0], field[1], cpu, peak, cgal_s,
            cgal_cpu, cgal_peak, Compare(Tail(field, 3), exact, &seen));
+  if (!g_dump.empty()) {  // per body-mesh vertex: x y z cloud_mm exact_mm seen
+    if (FILE* f = std::fopen((g_dump + "/generated.txt").c_str(), "w")) {
+      const Eigen::VectorXd c = Tail(field, 3);
+      for (Eigen::Index v = 0; v < body.mesh.num_vertices(); ++v)
+        std::fprintf(f, "%.3f %.3f %.3f %.4f %.4f %d\n", body.mesh.vertices(v, 0),
+                     body.mesh.vertices(v, 1), body.mesh.vertices(v, 2), c[v], exact[v],
+                     static_cast<int>(seen[static_cast<size_t>(v)]));
+      std::fclose(f);
+    }
+  }
+  if (field_only) return;
 
   // Ten datum-point segments, point to point.
   std::vector<std::pair<std::string, std::string>> pairs;
@@ -320,13 +345,16 @@ void GeneratedScanRows(bool cgal, bool quick) {
 
 int Main(int argc, char** argv) {
   std::filesystem::path shared = BESPOKE_DEFAULT_SHARED_DIR;
-  bool cgal = true, quick = false;
+  bool cgal = true, quick = false, body_only = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--no-cgal")) cgal = false;
     else if (!std::strcmp(argv[i], "--quick")) quick = true;
     else if (!std::strcmp(argv[i], "--shared") && i + 1 < argc) shared = argv[++i];
+    else if (!std::strcmp(argv[i], "--dump") && i + 1 < argc) g_dump = argv[++i];
+    else if (!std::strcmp(argv[i], "--body-only")) body_only = true;
     else {
-      std::fprintf(stderr, "usage: geodesic_bench [--shared DIR] [--no-cgal] [--quick]\n");
+      std::fprintf(stderr, "usage: geodesic_bench [--shared DIR] [--no-cgal] [--quick] [--body-only] "
+                   "[--dump DIR]\n");
       return 1;
     }
   }
@@ -340,7 +368,7 @@ int Main(int argc, char** argv) {
   TriangleMesh body;
   if (have_meshes) {
     body = LoadMesh(meshes / "makehuman-body-remesh-116k.off", LengthUnit::kDecimetre);
-    if (!quick) {
+    if (!quick && !body_only) {
       MeshRow("bunny 35k (vertices)", LoadMesh(meshes / "bunny-35k.off", LengthUnit::kMetre),
               cgal, {});
       MeshRow("bunny 109k (vertices)",
@@ -348,8 +376,8 @@ int Main(int argc, char** argv) {
     }
     body_exact = MeshRow("body 116k (vertices)", body, cgal && !quick, {});
   }
-  GeneratedScanRows(cgal, quick);
-  if (have_meshes) {
+  GeneratedScanRows(cgal, quick, body_only);
+  if (have_meshes && !body_only) {
     std::printf("\ngrowth: the 116k body cloud at four cell sizes (errors vs CGAL above)\n");
     PrintHeader();
     for (const double spacings : {6.0, 4.0, 3.0, 2.0}) {

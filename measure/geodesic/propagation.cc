@@ -31,23 +31,7 @@ void PropagationOptions::Check() const {
 Propagation::Propagation(const PropagationOptions& options, const CloudGrid& grid,
                          const Eigen::Vector3d& source, int source_node)
     : options_(options), grid_(grid), source_(source), source_node_(source_node) {
-  options_.Check();
-  flow_.max_iterations = options_.flow_iterations;
-  flow_.tolerance_mm = options_.flow_tolerance_cells * grid.cell_size_mm();
-  flow_.replan_distance_mm = options_.replan_cells * grid.cell_size_mm();
-  flow_.max_step_segments = options_.max_step_segments;
-  const int n = grid.num_nodes();
-  if (source_node < 0 || source_node >= n)
-    throw InputError("propagation: source node " + std::to_string(source_node) + " out of range");
-  if (!source.allFinite()) throw InputError("propagation: the source is not finite");
-  distance_.assign(static_cast<size_t>(n), kInf);
-  prefix_.assign(static_cast<size_t>(n), 0.0);
-  parent_.assign(static_cast<size_t>(n), -1);
-  start_.assign(static_cast<size_t>(n), 0);
-  count_.assign(static_cast<size_t>(n), 0);
-  offset_.assign(static_cast<size_t>(n), 0);
-  tangent_.assign(static_cast<size_t>(n), Eigen::Vector3d::Zero());
-  stamp_.assign(static_cast<size_t>(n), -1);
+  Init();
   // The source node's path: the source itself, then its site.
   const Eigen::Vector3d& site = grid.site(source_node);
   const bool apart = (site - source).norm() > 1e-6 * grid.cell_size_mm();
@@ -69,6 +53,60 @@ Propagation::Propagation(const PropagationOptions& options, const CloudGrid& gri
   stats_.settled = 1;
   front_.push_back(source_node);
   r_max_ = distance_[source_node] + options_.band_cells * grid.cell_size_mm();
+  min_held_ = kInf;
+  max_held_ = 0;
+}
+
+void Propagation::Init() {
+  options_.Check();
+  flow_.max_iterations = options_.flow_iterations;
+  flow_.tolerance_mm = options_.flow_tolerance_cells * grid_.cell_size_mm();
+  flow_.replan_distance_mm = options_.replan_cells * grid_.cell_size_mm();
+  flow_.max_step_segments = options_.max_step_segments;
+  const int n = grid_.num_nodes();
+  if (source_node_ < 0 || source_node_ >= n)
+    throw InputError("propagation: source node " + std::to_string(source_node_) + " out of range");
+  if (!source_.allFinite()) throw InputError("propagation: the source is not finite");
+  distance_.assign(static_cast<size_t>(n), kInf);
+  prefix_.assign(static_cast<size_t>(n), 0.0);
+  parent_.assign(static_cast<size_t>(n), -1);
+  start_.assign(static_cast<size_t>(n), 0);
+  count_.assign(static_cast<size_t>(n), 0);
+  offset_.assign(static_cast<size_t>(n), 0);
+  tangent_.assign(static_cast<size_t>(n), Eigen::Vector3d::Zero());
+  stamp_.assign(static_cast<size_t>(n), -1);
+}
+
+Propagation::Propagation(const PropagationOptions& options, const CloudGrid& grid,
+                         const Eigen::Vector3d& source, const std::vector<int>& seeds)
+    : options_(options), grid_(grid), source_(source),
+      source_node_(seeds.empty() ? -1 : seeds.front()) {
+  if (seeds.empty()) throw InputError("propagation: no seed nodes round the source");
+  Init();
+  double nearest = kInf;
+  for (const int seed : seeds) {
+    if (seed < 0 || seed >= grid.num_nodes())
+      throw InputError("propagation: seed node " + std::to_string(seed) + " out of range");
+    if (settled(seed)) continue;
+    const Eigen::Vector3d& site = grid.site(seed);
+    Eigen::MatrixX3d window(2, 3);
+    window.row(0) = source.transpose();
+    window.row(1) = site.transpose();
+    const std::vector<int> hints = {seed, seed};
+    std::vector<TangentPlane> planes(2);  // zero normals: the chord counts as a chord
+    planes[0].point = source;
+    planes[1] = grid.surface(seed).PlaneAt(site);
+    distance_[seed] = (site - source).norm();
+    const Eigen::Vector3d normal = planes[1].normal;
+    Eigen::Vector3d t = site - source;
+    t -= normal * normal.dot(t);
+    if (t.norm() > 0) tangent_[seed] = t.normalized();
+    Store(seed, window, hints, planes);
+    ++stats_.settled;
+    front_.push_back(seed);
+    nearest = std::min(nearest, distance_[seed]);
+  }
+  r_max_ = nearest + options_.band_cells * grid.cell_size_mm();
   min_held_ = kInf;
   max_held_ = 0;
 }

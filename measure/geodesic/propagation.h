@@ -76,6 +76,14 @@ class Propagation {
   // (see CloudGrid::LocateNode). The grid must outlive this object.
   Propagation(const PropagationOptions& options, const CloudGrid& grid,
               const Eigen::Vector3d& source, int source_node);
+  // A source in an unscanned region (a hole of the scan, e.g. the crotch):
+  // every node in `seeds` (the scanned rim around it, non-empty, the first
+  // the nearest) starts with the straight chord source -> its site as its
+  // path and the chord's length as its distance - the hole spanned by
+  // straight lines - and the wavefront grows from all of them at once. The
+  // chords are shortest (triangle inequality), so causality still holds.
+  Propagation(const PropagationOptions& options, const CloudGrid& grid,
+              const Eigen::Vector3d& source, const std::vector<int>& seeds);
 
   // Propagates until node `target` is settled, or everything reachable when
   // `target` < 0. Cheap when already done.
@@ -106,6 +114,7 @@ class Propagation {
     int parent = -1;
     double estimate = 0;
   };
+  void Init();
   Choice ChooseParent(int node) const;
   void Settle(int node, int parent);
   void Store(int node, const Eigen::MatrixX3d& window, const std::vector<int>& hints,
