@@ -21,15 +21,22 @@ bool SeamPoint(const Context& c, double z, bool front, Eigen::Vector3d* out, dou
   for (int k = 0; k <= 3; ++k) {
     for (int s : {centre - k, centre + k}) {
       if (s < 0 || s >= static_cast<int>(c.slices.size())) continue;
-      // The narrowest strip that holds points: the centre line itself can
-      // lie in a fold (the gluteal cleft, between the breasts).
+      // The narrowest strip (2.5, 5, then 10 mm) that holds points: the
+      // centre line itself can lie in a fold (the gluteal cleft, between
+      // the breasts), which a wider strip would miss.
       int best_row = -1;
       const std::vector<int> rows = c.TrunkRows(c.slices[static_cast<size_t>(s)]);
-      for (double width : {std::min(5.0, half_width_mm), half_width_mm}) {
+      if (rows.empty()) continue;
+      // A front point must lie in front of the section's middle (a hole in
+      // the front, e.g. the throat under the chin, leaves only the back).
+      double middle = 0;
+      for (int r : rows) middle += c.points(r, 1);
+      middle /= static_cast<double>(rows.size());
+      for (double width : {std::min(2.5, half_width_mm), std::min(5.0, half_width_mm), half_width_mm}) {
         double best = front ? -kInf : kInf;
         for (int r : rows) {
-          if (std::abs(c.points(r, 0)) > width) continue;
           const double y = c.points(r, 1);
+          if (std::abs(c.points(r, 0)) > width || (front ? y < middle : y > middle)) continue;
           if (front ? y > best : y < best) best = y, best_row = r;
         }
         if (best_row >= 0) break;
