@@ -91,7 +91,10 @@ bool SideNeck(const Context& c, int sign, const Neck& neck, double top_z, const 
   for (Eigen::Index r = 0; r < c.points.rows(); ++r) {
     const Eigen::Vector3d p = c.P(static_cast<int>(r));
     const double x = sign * p.x();
-    if (std::abs(p.y() - neck.y) > 8 || x < top_x - 10 || x > p2.x() || p.z() < p2.y() - 5 || p.z() > top_z + 5) continue;
+    // Only the inner 40 % of the way out to the shoulder point: the base of
+    // the neck, not a dip where the shoulder line meets the arm.
+    const double reach = top_x + 0.4 * (p2.x() - top_x);
+    if (std::abs(p.y() - neck.y) > 8 || x < top_x - 10 || x > reach || p.z() < p2.y() - 5 || p.z() > top_z + 5) continue;
     const double depth = (Eigen::Vector2d(x, p.z()) - p1).dot(down);
     if (depth > best) best = depth, *out = p;
   }
