@@ -32,6 +32,11 @@ struct SynthBodyCommandOptions {
     }
     if (!truth.empty() && truth.extension() != ".json") throw InputError(truth, "--truth must be a .json file");
     if (skip_reference && truth.empty()) throw InputError("--skip-reference needs --truth");
+    for (const std::filesystem::path& file : {output, truth}) {
+      const std::filesystem::path folder = file.parent_path();
+      if (!file.empty() && !folder.empty() && !std::filesystem::is_directory(folder))
+        throw InputError(file, "its folder does not exist");
+    }
   }
 };
 
@@ -49,6 +54,18 @@ CommandRunner SetupSynthBodyCommand(CLI::App& app) {
   return [o](const GlobalOptions& global) {
     o->Check();
     Body body = GenerateSynthBody(o->body);
+    // Everything is computed before anything is written, so a failure leaves no half output.
+    const Catalogue& catalogue = Catalogue::Builtin();
+    const ReferenceOptions reference;
+    ReferenceMeasurements truth;
+    if (!o->truth.empty()) {
+      if (o->skip_reference) {
+        truth.skipped.push_back({"*", "reference measurements not computed (--skip-reference)"});
+      } else {
+        ProgressBar bar(global.quiet);
+        truth = ComputeReferenceMeasurements(reference, catalogue, body, &bar);
+      }
+    }
     WriteOptions write;
     write.comment = "bespoke synth-body " + o->body.model + " seed " + std::to_string(o->body.seed) +
                     "; units mm; frame body";
@@ -56,15 +73,6 @@ CommandRunner SetupSynthBodyCommand(CLI::App& app) {
     spdlog::info("{}: {} body, {} vertices, {} faces, {} datum points", o->output.string(), body.model,
                  body.mesh.num_vertices(), body.mesh.num_faces(), body.landmarks.size());
     if (!o->truth.empty()) {
-      const Catalogue& catalogue = Catalogue::Builtin();
-      const ReferenceOptions reference;
-      ReferenceMeasurements truth;
-      if (o->skip_reference) {
-        truth.skipped.push_back({"*", "reference measurements not computed (--skip-reference)"});
-      } else {
-        ProgressBar bar(global.quiet);
-        truth = ComputeReferenceMeasurements(reference, catalogue, body, &bar);
-      }
       WriteTruthFile(o->truth, body, catalogue, reference, truth);
       spdlog::info("{}: {} reference measurements, {} skipped", o->truth.string(), truth.measurements.size(),
                    truth.skipped.size());

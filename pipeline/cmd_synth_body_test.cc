@@ -174,6 +174,7 @@ TEST(SynthBodyCli, BadInputIsExitOneAndNothingWritten) {
       {"synth-body -o " + Q(dir / "body.xyz"), "body.xyz"},
       {"synth-body" + out + " --truth " + Q(dir / "truth.txt"), "truth.txt"},
       {"synth-body" + out + " --skip-reference", "--skip-reference"},
+      {"synth-body" + out + " --truth " + Q(dir / "nowhere" / "truth.json"), "folder does not exist"},
       {"synth-body --model makehuman --makehuman-dir " + Q(dir / "nowhere") + out, "nowhere"},
       {"synth-set --count 0 -o " + Q(dir / "set"), "count"},
   };

@@ -11,7 +11,8 @@
 //          the three datum points (mesh_section.h). MeasurementDef::arms
 //          "lower" moves a horizontal plane down until the trunk is free of
 //          the arms (chest: just under the armpits).
-//   length (geodesic)      sum of exact geodesics (CGAL) along the datum
+//   length (geodesic)      sum of exact geodesics (CGAL, each on a crop of
+//          the mesh that provably holds it: cropped_geodesics.h) along the datum
 //          chain, + the last point's height when to_floor; (breadth) the
 //          horizontal distance; (point_to_line) the 3-D point-line distance.
 //   height                 z of datum[0] (the floor is z = 0), or z[0] - z[1].
