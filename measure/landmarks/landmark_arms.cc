@@ -127,10 +127,20 @@ void FindArm(Context* c, int sign) {
     return;
   }
   c->Put("elbow" + side, c->P(elbow), confidence * 0.8, "arm_length_share_back", flags);
-  const double upper_t = 0.5 * (c->P(elbow) - f.origin).dot(f.axis);
+  // Upper arm: along the upper arm's own axis (shoulder point to elbow
+  // point), halfway, the point farthest outwards across that axis.
+  const Eigen::Vector3d to_elbow = c->P(elbow) - f.origin;
+  const Eigen::Vector3d upper_axis = to_elbow.normalized();
+  const double half = 0.5 * to_elbow.norm();
   const Eigen::Vector3d lateral = Eigen::Vector3d(sign, 0, 0);
-  const Eigen::Vector3d outward = (lateral - lateral.dot(f.axis) * f.axis).normalized();
-  const int upper = BestInSlab(*c, f, upper_t, 10, outward);
+  const Eigen::Vector3d outward = (lateral - lateral.dot(upper_axis) * upper_axis).normalized();
+  std::vector<int> slab;
+  for (int r : f.rows) {
+    const Eigen::Vector3d d = c->P(r) - f.origin;
+    const double t = d.dot(upper_axis);
+    if (std::abs(t - half) < 10 && (d - t * upper_axis).norm() < 90) slab.push_back(r);
+  }
+  const int upper = c->SmoothExtreme(slab, outward, 10);
   if (upper >= 0) c->Put("upper_arm" + side, c->P(upper), confidence * 0.8, "mid_upper_arm_outside", flags);
   else c->Missing("upper_arm" + side, "no arm points midway to the elbow");
 }
