@@ -8,7 +8,8 @@
 //         no surface path reaches), single source to all points.
 // Coordinates are in the scan's frame and file units (as `bespoke info`
 // shows them); every output is in mm. A coordinate that is not three finite
-// numbers, or that lies far from the scan, is an InputError (exit 1).
+// numbers, or that lies far from the scan, is an InputError (exit 1); one in
+// an unscanned region the scan surrounds (the crotch) is used with a warning.
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
@@ -17,6 +18,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <tuple>
 
 #include "measure/geodesic/cloud_geodesics.h"
 #include "pipeline/commands.h"
@@ -121,6 +123,17 @@ int Run(const GeodesicCommandOptions& o, const GlobalOptions& global) {
     report["to_on_surface"] =
         ToJson(Eigen::Vector3d(path.points.row(path.points.rows() - 1).transpose()));
     report["final_flow_converged"] = path.polish_converged;
+    report["from_snap_mm"] = path.from_snap_mm;
+    report["to_snap_mm"] = path.to_snap_mm;
+    report["from_unscanned"] = path.from_unscanned;
+    report["to_unscanned"] = path.to_unscanned;
+    for (const auto& [end, snap, unscanned] :
+         {std::tuple<const char*, double, bool>{"--from", path.from_snap_mm, path.from_unscanned},
+          {"--to", path.to_snap_mm, path.to_unscanned}})
+      if (unscanned)
+        std::cerr << "warning: " << end << " lies in an unscanned region of the scan, " << snap
+                  << " mm from the nearest scanned skin; the length spans that hole with a "
+                     "straight line\n";
     if (!o.path_out.empty()) WritePath(path, o.path_out);
   }
   if (!o.field_out.empty()) {
