@@ -180,8 +180,8 @@ TEST(MakeHumanLandmarks, WithinToleranceOfTheTruth) {
   std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(errors.size() / 2), errors.end());
   const double median = errors[errors.size() / 2];
   std::printf("MakeHuman median landmark error %.1f mm\n", median);
-  // The target is 10 mm; measured 13.2 mm on these two subjects and
-  // 13.3 mm over ten (docs/landmarks.md): the gap is stated, not hidden.
+  // The target is 10 mm; measured 13.0 mm on these two subjects and
+  // 12.9 mm over ten (docs/landmarks.md): the gap is stated, not hidden.
   EXPECT_LE(median, 18.0) << "mm";
 }
 
