@@ -1,11 +1,13 @@
-// The single-scan job's steps. Each stage is wired in here as its library
-// lands; until then it is listed with the reason it is skipped.
+// The single-scan job's steps: read, clean, measure, resize (with a design).
 #include "pipeline/batch/scan_steps.h"
 
 #include <spdlog/spdlog.h>
 
 #include "measure/clean/clean.h"
 #include "measure/clean/clean_json.h"
+#include "measure/measurements/measure_scan.h"
+#include "measure/measurements/measurement_document.h"
+#include "pipeline/batch/scan_step_resize.h"
 #include "scanners/core/json_io.h"
 #include "scanners/core/units.h"
 #include "scanners/io/scan_io.h"
@@ -67,6 +69,39 @@ void Clean(JobState& s) {
   s.scan_mm.reset();  // the raw cloud is no longer needed: free its memory
 }
 
+// measure/measurements: datum points (automatic, then the job's override
+// file), every catalogue measurement, and the files of `bespoke measure`
+// (measurements.json/.csv/.vit, freesewing.json, render.png). The summary
+// takes its columns from measurements.json; results get the counts.
+void MeasureStep(JobState& s) {
+  const Eigen::Isometry3d body_from_scanner(s.body_from_scanner->matrix());
+  const LandmarkOptions landmark_options;
+  const MeasureOptions options;
+  FoundLandmarks found = FindLandmarks(landmark_options, *s.body_cloud, body_from_scanner, s.options->landmarks,
+                                       s.progress);
+  for (const std::string& w : found.warnings) spdlog::warn("{}", w);
+  const MeasureResult result = Measure(options, Catalogue::Builtin(), *s.body_cloud, found.set, s.progress);
+  const MeasureOutputs outputs{s.out_dir / "measurements.json", s.out_dir / "measurements.csv",
+                               s.out_dir / "measurements.vit", s.out_dir / "freesewing.json",
+                               s.out_dir / "render.png", false};
+  const nlohmann::json extra = {
+      {"input", {{"file", s.scan_file.string()}, {"points_cleaned", s.body_cloud->size()}}},
+      {"landmark_overrides", s.options->landmarks.string()},
+      {"settings", {{"landmarks", ToJson(landmark_options)}, {"measure", ToJson(options)}}},
+      {"timings", nlohmann::json::array({{{"name", "landmarks"}, {"time_s", found.stage.time_s},
+                                          {"cpu_s", found.stage.cpu_s}}})}};
+  for (const std::filesystem::path& file : WriteMeasureOutputs(outputs, *s.body_cloud, found.set, result, extra))
+    s.AddOutput(file.filename().string());
+  std::size_t flagged = 0;
+  for (const Measurement& m : result.measurements) flagged += !m.flags.empty();
+  s.SetResult("landmarks_found", static_cast<std::int64_t>(found.set.points.size()));
+  s.SetResult("measurements", static_cast<std::int64_t>(result.measurements.size()));
+  s.SetResult("measurements_skipped", static_cast<std::int64_t>(result.skipped.size()));
+  spdlog::info("measure: {} landmarks, {} measurements ({} flagged, {} skipped)", found.set.points.size(),
+               result.measurements.size(), flagged, result.skipped.size());
+  s.measurements = MeasurementDocument(result, found.set, extra);
+}
+
 const char* NeedsScan(const JobState& s) {
   return s.scan_mm ? nullptr : "needs the scan (read step skipped)";
 }
@@ -88,10 +123,8 @@ const std::vector<ScanStep>& ScanSteps() {
   static const std::vector<ScanStep> steps = {
       {"read", &Read, nullptr, nullptr},
       {"clean", &Clean, nullptr, &NeedsScan},
-      {"measure", nullptr, "landmarks and measurements (bespoke measure, issue 5) are not in this build yet",
-       &NeedsBodyCloud},
-      {"resize", nullptr, "pattern resizing (bespoke resize, issue 6) is not in this build yet",
-       &NeedsDesignAndMeasurements},
+      {"measure", &MeasureStep, nullptr, &NeedsBodyCloud},
+      {"resize", &ResizeStep, nullptr, &NeedsDesignAndMeasurements},
   };
   return steps;
 }

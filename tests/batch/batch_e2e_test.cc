@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 
 TEST(BatchE2E, RunWritesEverythingAndDoneJsonLast) {
   TempDir dir;
-  WriteSyntheticBodyScan({20000, 1700, 1.0, 1.0, 30, 7}, dir / "person.ply");
+  WriteSyntheticBodyScan({60000, 1700, 1.0, 1.0, 30, 7}, dir / "person.ply");
   ASSERT_EQ(RunBespoke({"run", (dir / "person.ply").string(), "-o", (dir / "out").string()},
                        dir / "log.txt"), 0) << ReadText(dir / "log.txt");
   std::string problem;
@@ -29,6 +29,13 @@ TEST(BatchE2E, RunWritesEverythingAndDoneJsonLast) {
   EXPECT_EQ(record->input_sha256, FileSha256(dir / "person.ply"));
   EXPECT_EQ(record->results.value("file_unit", ""), "m");
   EXPECT_FALSE(record->outputs.empty());
+  // The measure step ran: the document, its exports and the render.
+  for (const char* f : {"measurements.json", "measurements.csv", "measurements.vit", "freesewing.json", "render.png"})
+    EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
+  const nlohmann::json doc = ReadJsonFile(dir / "out" / "measurements.json");
+  EXPECT_EQ(doc["format"], "bespoke-measurements");
+  EXPECT_GE(doc["measurements"].size(), 40u) << doc["skipped"].dump();
+  EXPECT_GE(record->results.value("measurements", 0), 40);
   EXPECT_EQ(record->steps.front().value("name", ""), "read");
   // done.json is the newest file of the folder.
   const auto done_time = fs::last_write_time(dir / "out" / "done.json");
@@ -51,7 +58,7 @@ TEST(BatchE2E, GoodScansMeasuredHostileFilesListedWithReasons) {
   const int good = 8;
   fs::create_directories(dir / "in");
   for (int k = 0; k < good; ++k) {
-    WriteSyntheticBodyScan({20000, 1600.0 + 25 * k, 0.9 + 0.03 * k, 1.0, 40.0 * k,
+    WriteSyntheticBodyScan({60000, 1600.0 + 25 * k, 0.9 + 0.03 * k, 1.0, 40.0 * k,
                             static_cast<std::uint32_t>(k + 1)},
                            dir / "in" / ("good_" + std::to_string(k) + ".ply"));
   }
@@ -64,6 +71,10 @@ TEST(BatchE2E, GoodScansMeasuredHostileFilesListedWithReasons) {
   int ok = 0;
   for (const std::string& r : rows) ok += r.find(",ok,") != std::string::npos ? 1 : 0;
   EXPECT_EQ(ok, good) << ReadText(dir / "out" / "summary.csv");
+  // summary.csv carries the measurements' columns.
+  const std::string header = ReadText(dir / "out" / "summary.csv").substr(0, ReadText(dir / "out" / "summary.csv").find('\n'));
+  for (const char* column : {"stature_mm", "waist_girth_mm", "hip_girth_mm", "flagged"})
+    EXPECT_NE(header.find(column), std::string::npos) << header;
   const std::vector<std::string> failures = CsvRows(ReadText(dir / "out" / "failures.csv"));
   EXPECT_EQ(failures.size(), hostile.size());
   for (const std::string& f : failures) {

@@ -6,60 +6,48 @@
 #include <fstream>
 #include <random>
 
+#include "scanners/body/parametric_body.h"
 #include "scanners/core/atomic_file.h"
+#include "scanners/scan_sim/scan_sim.h"
 #include "scanners/core/types.h"
 #include "scanners/io/scan_io.h"
 
 namespace bespoke::testing {
 namespace fs = std::filesystem;
 
-namespace {
-
-// A point on an elliptic cylinder between heights z0 and z1 around (cx, cy).
-Eigen::Vector3d OnCylinder(std::mt19937& rng, double cx, double cy, double rx, double ry,
-                           double z0, double z1, double tilt_x = 0) {
-  std::uniform_real_distribution<double> u(0, 1);
-  const double a = 2 * M_PI * u(rng), t = u(rng);
-  const double z = z0 + t * (z1 - z0);
-  return {cx + rx * std::cos(a) + tilt_x * (z1 - z), cy + ry * std::sin(a), z};
-}
-
-}  // namespace
-
 void WriteSyntheticBodyScan(const SyntheticScanOptions& o, const fs::path& file) {
-  std::mt19937 rng(o.seed);
-  std::uniform_real_distribution<double> u(0, 1);
-  std::normal_distribution<double> noise(0, o.noise_mm);
-  const double h = o.stature_mm / 1750.0, g = o.girth_scale;
-  const int floor_points = o.points / 10;
-  PointCloud cloud;
-  cloud.points.resize(o.points + floor_points, 3);
-  for (int i = 0; i < o.points; ++i) {
-    const double part = u(rng);
-    Eigen::Vector3d p;
-    if (part < 0.40) {
-      p = OnCylinder(rng, 0, 0, 160 * g, 110 * g, 820 * h, 1450 * h);  // torso
-    } else if (part < 0.70) {
-      p = OnCylinder(rng, part < 0.55 ? 95 * g : -95 * g, 0, 65 * g, 65 * g, 0, 820 * h);  // legs
-    } else if (part < 0.88) {
-      const double side = part < 0.79 ? 1 : -1;  // arms, A-pose
-      p = OnCylinder(rng, side * 215 * g, 0, 40 * g, 40 * g, 800 * h, 1420 * h, side * 0.25);
-    } else if (part < 0.92) {
-      p = OnCylinder(rng, 0, 0, 55 * g, 55 * g, 1450 * h, 1550 * h);  // neck
-    } else {
-      const double a = 2 * M_PI * u(rng), c = 2 * u(rng) - 1, s = std::sqrt(1 - c * c);
-      p = {90 * g * s * std::cos(a), 100 * g * s * std::sin(a), 1650 * h + 100 * h * c};  // head
-    }
-    cloud.points.row(i) = (p + Eigen::Vector3d(noise(rng), noise(rng), noise(rng))).transpose();
-  }
-  for (int i = 0; i < floor_points; ++i) {
-    cloud.points.row(o.points + i) << 1200 * u(rng) - 600, 1200 * u(rng) - 600, noise(rng);
-  }
-  const Eigen::Affine3d scanner_from_body(
-      Eigen::AngleAxisd(o.yaw_deg * M_PI / 180, Eigen::Vector3d::UnitZ()));
-  TransformInPlace(scanner_from_body, &cloud);
-  cloud.points /= 1000.0;  // written in metres, as most scanners do
-  WriteScan({}, cloud, file);
+  // A parametric body (scanners/body) scanned by the virtual booth
+  // (scanners/scan_sim): a person the landmark detector and the measuring
+  // can work on (a bundle of cylinders is not one).
+  ParametricBodyOptions shape;
+  const double g = o.girth_scale;
+  shape.stature_mm = o.stature_mm;
+  for (double* girth : {&shape.neck_girth_mm, &shape.chest_girth_mm, &shape.bust_girth_mm,
+                        &shape.under_bust_girth_mm, &shape.waist_girth_mm, &shape.middle_hip_girth_mm,
+                        &shape.hip_girth_mm, &shape.upper_arm_girth_mm, &shape.wrist_girth_mm,
+                        &shape.thigh_girth_mm, &shape.knee_girth_mm, &shape.calf_girth_mm,
+                        &shape.ankle_girth_mm})
+    *girth *= g;
+  shape.torso_segments = 48;  // a coarse mesh: quick to build, the scan is what matters
+  shape.arm_segments = 32;
+  shape.ring_spacing_mm = 20;
+  shape.girth_ring_segments = 64;
+  shape.max_girth_deficit_mm = 2.0;
+  const Body body = GenerateParametricBody(shape);
+  ScanSimOptions booth;
+  // About `points` body points: the booth's rays scale with width x height.
+  const double scale = std::sqrt(std::max(1000, o.points) / 200000.0);
+  booth.booth.width_px = std::max(40, static_cast<int>(std::lround(200 * scale)));
+  booth.booth.height_px = std::max(30, static_cast<int>(std::lround(150 * scale)));
+  booth.noise_sigma_mm = o.noise_mm;
+  booth.seed = o.seed;
+  ScanSimResult scan = SimulateScan(booth, body.mesh);
+  const Eigen::Affine3d scanner_from_body(Eigen::AngleAxisd(o.yaw_deg * M_PI / 180, Eigen::Vector3d::UnitZ()));
+  TransformInPlace(scanner_from_body, &scan.cloud);
+  scan.cloud.points /= 1000.0;  // written in metres, as most scanners do
+  scan.cloud.normals.resize(0, 3);
+  scan.cloud.scalars.clear();
+  WriteScan({}, scan.cloud, file);
 }
 
 std::vector<std::string> WriteHostileFiles(const fs::path& dir, std::uint32_t seed) {

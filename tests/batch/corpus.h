@@ -1,12 +1,10 @@
 // Scan folders for the batch tests and the reliability script: good scans and
 // malformed or hostile files.
 //
-// Good scans: until the virtual scanner (`bespoke scan-sim`) writes them,
-// WriteSyntheticBodyScan samples a crude standing person (elliptic torso,
-// legs, arms in an A-pose, neck, head; all in mm, z up, feet at z = 0) with
-// Gaussian noise and a floor patch, rotated about z and written in metres as
-// binary PLY - enough for the read/clean stages and for the batch mechanics,
-// not a body model (scanners/body has the real one).
+// Good scans: WriteSyntheticBodyScan scans a parametric body (scanners/body,
+// coarse mesh, girths scaled) with the virtual booth (scanners/scan_sim:
+// noise, outliers, floor), rotated about z and written in metres as binary
+// PLY: a person the whole job (clean, landmarks, measure) works on.
 //
 // Hostile files (WriteHostileFiles), each a different way a file can be bad:
 //   truncated.ply      a good binary PLY cut at 60 % of its bytes
@@ -33,7 +31,7 @@
 namespace bespoke::testing {
 
 struct SyntheticScanOptions {
-  int points = 60000;          // points on the body (the floor adds 10 %)
+  int points = 60000;          // about this many body points (the booth adds floor and outliers)
   double stature_mm = 1750;    // crown height
   double girth_scale = 1.0;    // widths and depths x this
   double noise_mm = 1.0;       // Gaussian noise per coordinate, mm
