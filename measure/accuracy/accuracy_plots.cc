@@ -64,9 +64,10 @@ void StripChart(const std::vector<const MeasurementSummary*>& measurements, IsoC
   // runs off the chart (its numbers are in the table).
   double lo = -tolerance, hi = tolerance;
   for (double y : subjects.y) lo = std::min(lo, y), hi = std::max(hi, y);
+  // Room at the top for the legend (drawn top right, over the data otherwise).
   const double pad = 0.08 * (hi - lo);
   chart.y_min = lo - pad;
-  chart.y_max = hi + pad;
+  chart.y_max = hi + 0.35 * (hi - lo);
   chart.x_min = 0.5;
   chart.x_max = x1;
   chart.width_px = std::max(600, 60 * static_cast<int>(measurements.size()) + 200);
