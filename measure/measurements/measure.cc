@@ -9,6 +9,8 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <thread>
+#include <exception>
 
 #include "scanners/core/errors.h"
 
@@ -104,6 +106,18 @@ Measurement Girth(const MeasureOptions& o, const MeasurementDef& m, const PointC
 // propagation of a start point: sources are taken greedily (the landmark in
 // most pending pairs first), every pair touching it solved from it.
 class PathCache {
+  struct Entry {
+    double length_mm = 0;
+    Eigen::MatrixX3d points;
+    std::string error;
+  };
+  struct End {
+    Vec start;              // where the path starts on the scan
+    double bridge_mm = 0;   // straight bridge from there to the datum point
+    bool in_hole = false;
+  };
+
+
  public:
   void Need(const std::string& a, const std::string& b) {
     if (a != b) pending_.insert(std::minmax(a, b));
@@ -117,7 +131,7 @@ class PathCache {
   // minimises geodesic(other, p) + |p - datum| (a tape bridging the crotch).
   // With both ends in holes, each bridges from its nearest scan point.
   void Solve(CloudGeodesics& geodesics, const LandmarkSet& set, double tolerance_mm, double max_bridge_mm,
-             Progress* progress) {
+             int threads, Progress* progress) {
     for (const auto& pair : pending_)
       for (const std::string& name : {pair.first, pair.second}) {
         if (ends_.count(name)) continue;
@@ -130,39 +144,82 @@ class PathCache {
         ends_[name] = end;
       }
     ProgressBegin(progress, "geodesics", static_cast<std::int64_t>(pending_.size()));
-    std::int64_t done = 0;
+    // Plan: source groups, greedily (the landmark in most pending pairs first).
+    std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>> groups;
     while (!pending_.empty()) {
       std::map<std::string, int> degree;
       for (const auto& [a, b] : pending_) ++degree[a], ++degree[b];
       const std::string source = std::max_element(degree.begin(), degree.end(), [](const auto& x, const auto& y) {
                                    return x.second < y.second;
                                  })->first;
+      groups.emplace_back(source, std::vector<std::pair<std::string, std::string>>());
       for (auto it = pending_.begin(); it != pending_.end();) {
         if (it->first != source && it->second != source) { ++it; continue; }
-        const std::string& target = it->first == source ? it->second : it->first;
-        Entry entry;
-        try {
-          End from = ends_.at(source), to = ends_.at(target);
-          const bool flip = from.in_hole && !to.in_hole;  // solve from the end on the scan
-          if (flip) std::swap(from, to);
-          if (to.in_hole && !from.in_hole) to = BestExit(geodesics, from, set.points.at(flip ? source : target).position_mm, max_bridge_mm);
-          CloudGeodesicPath p = geodesics.Between(from.start, to.start);
-          entry.length_mm = p.length_mm + from.bridge_mm + to.bridge_mm;
-          const Vec& a = set.points.at(flip ? target : source).position_mm;
-          const Vec& b = set.points.at(flip ? source : target).position_mm;
-          Eigen::MatrixX3d points(p.points.rows() + 2, 3);
-          points << a.transpose(), p.points, b.transpose();  // from `a` to `b`
-          const bool forward = (it->first == source) != flip;  // stored from pair.first
-          entry.points = forward ? points : Eigen::MatrixX3d(points.colwise().reverse());
-        } catch (const InputError& e) {
-          entry.error = e.what();
-        }
-        solved_[*it] = std::move(entry);  // from pair.first to pair.second
+        groups.back().second.push_back(*it);
         it = pending_.erase(it);
-        ProgressUpdate(progress, ++done);
       }
     }
+    // Groups to workers (largest first, to the least loaded); worker 0 uses
+    // `geodesics`, the others build their own grid (CloudGeodesics keeps a
+    // per-object cache and is not thread-safe).
+    const int workers = std::max(1, std::min<int>(threads, static_cast<int>(groups.size())));
+    std::vector<std::vector<std::size_t>> assigned(static_cast<std::size_t>(workers));
+    std::vector<std::size_t> load(static_cast<std::size_t>(workers), 0);
+    std::vector<std::size_t> order(groups.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t x, std::size_t y) { return groups[x].second.size() > groups[y].second.size(); });
+    for (std::size_t g : order) {
+      const auto w = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
+      assigned[w].push_back(g), load[w] += groups[g].second.size();
+    }
+    std::vector<std::map<std::pair<std::string, std::string>, Entry>> results(static_cast<std::size_t>(workers));
+    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(workers));
+    auto work = [&](std::size_t w) {
+      try {
+        std::unique_ptr<CloudGeodesics> own;
+        if (w > 0) own = std::make_unique<CloudGeodesics>(geodesics.options(), geodesics.grid().index().points());
+        CloudGeodesics& g = w > 0 ? *own : geodesics;
+        for (std::size_t k : assigned[w])
+          for (const auto& pair : groups[k].second) results[w][pair] = SolvePair(g, set, groups[k].first, pair, max_bridge_mm);
+      } catch (...) {
+        errors[w] = std::current_exception();
+      }
+    };
+    std::vector<std::thread> pool;
+    for (std::size_t w = 1; w < static_cast<std::size_t>(workers); ++w) pool.emplace_back(work, w);
+    work(0);
+    for (std::thread& t : pool) t.join();
+    for (const std::exception_ptr& e : errors)
+      if (e) std::rethrow_exception(e);
+    std::int64_t done = 0;
+    for (auto& r : results) done += static_cast<std::int64_t>(r.size()), solved_.merge(r);
+    ProgressUpdate(progress, done);
     ProgressEnd(progress);
+  }
+
+  Entry SolvePair(CloudGeodesics& geodesics, const LandmarkSet& set, const std::string& source,
+                  const std::pair<std::string, std::string>& pair, double max_bridge_mm) const {
+    const std::string& target = pair.first == source ? pair.second : pair.first;
+    Entry entry;
+    try {
+      End from = ends_.at(source), to = ends_.at(target);
+      const bool flip = from.in_hole && !to.in_hole;  // solve from the end on the scan
+      if (flip) std::swap(from, to);
+      if (to.in_hole && !from.in_hole)
+        to = BestExit(geodesics, from, set.points.at(flip ? source : target).position_mm, max_bridge_mm);
+      CloudGeodesicPath p = geodesics.Between(from.start, to.start);
+      entry.length_mm = p.length_mm + from.bridge_mm + to.bridge_mm;
+      const Vec& a = set.points.at(flip ? target : source).position_mm;
+      const Vec& b = set.points.at(flip ? source : target).position_mm;
+      Eigen::MatrixX3d points(p.points.rows() + 2, 3);
+      points << a.transpose(), p.points, b.transpose();  // from `a` to `b`
+      const bool forward = (pair.first == source) != flip;  // stored from pair.first
+      entry.points = forward ? points : Eigen::MatrixX3d(points.colwise().reverse());
+    } catch (const InputError& e) {
+      entry.error = e.what();
+    }
+    return entry;
   }
 
   // Length and path from a to b; Skip when there is no path.
@@ -174,17 +231,6 @@ class PathCache {
   }
 
  private:
-  struct Entry {
-    double length_mm = 0;
-    Eigen::MatrixX3d points;
-    std::string error;
-  };
-  struct End {
-    Vec start;              // where the path starts on the scan
-    double bridge_mm = 0;   // straight bridge from there to the datum point
-    bool in_hole = false;
-  };
-
   static End BestExit(CloudGeodesics& geodesics, const End& from, const Vec& datum, double max_bridge_mm) {
     const CloudDistanceField field = geodesics.DistancesFrom(from.start);
     const Eigen::MatrixX3d& points = geodesics.grid().index().points();
@@ -288,6 +334,7 @@ void MeasureOptions::Check() const {
   if (!(datum_tolerance_mm > 0)) throw InputError("measure: datum_tolerance_mm must be > 0");
   if (!(arms_margin_mm >= 0)) throw InputError("measure: arms_margin_mm must be >= 0");
   if (!(lower_step_mm > 0) || !(max_lower_mm >= 0)) throw InputError("measure: need lower_step_mm > 0, max_lower_mm >= 0");
+  if (geodesic_threads < 1) throw InputError("measure: geodesic_threads must be >= 1");
   if (!(uncertain_confidence >= 0 && uncertain_confidence <= 1))
     throw InputError("measure: uncertain_confidence must be in [0, 1]");
 }
@@ -382,7 +429,8 @@ MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue,
     geodesics = std::make_unique<CloudGeodesics>(options.geodesics, body_cloud.points, progress);
     result.stages.push_back(grid_clock.Stop());
     StageClock path_clock("geodesics");
-    paths.Solve(*geodesics, landmarks, options.datum_tolerance_mm, options.max_bridge_mm, progress);
+    paths.Solve(*geodesics, landmarks, options.datum_tolerance_mm, options.max_bridge_mm, options.geodesic_threads,
+                progress);
     result.stages.push_back(path_clock.Stop());
   }
   StageClock other_clock("lengths_heights");
