@@ -38,7 +38,7 @@ RgbImage RenderMeasurements(const PointCloud& body_cloud, const LandmarkSet& lan
   options.views = {View::kFront, View::kRight};
   options.height_px = height_px;
   options.label_font_px = 11;
-  options.title = "bespoke measure: girths red, geodesics blue, breadths green, flagged orange";
+  options.title = "girths red, paths blue, breadths green, flagged orange";
   return Render(options, scene);
 }
 
