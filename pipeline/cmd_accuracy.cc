@@ -140,6 +140,9 @@ CommandRunner SetupAccuracyCommand(CLI::App& app) {
                                {"truth_landmarks", run.truth_landmarks},
                                {"created_utc", report.created_utc}};
     settings.update(report.settings);
+    if (run.truth_landmarks) {
+      report.title += " (measured at the TRUE datum points: landmark errors are zero by construction)";
+    }
     report.settings = settings;
     WriteAccuracyReport(report, o->output);
     PrintHeadline(report, o->output);
