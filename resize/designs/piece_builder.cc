@@ -13,7 +13,7 @@ int PieceBuilder::Add(const Eigen::Vector2d& p, const std::string& landmark,
   const int index = size() - 1;
   if (!landmark.empty()) {
     BESPOKE_CHECK(names_.emplace(landmark, index).second, "duplicate landmark " + landmark);
-    Landmark l;
+    PieceLandmark l;
     l.name = landmark;
     l.datum = datum;
     l.vertex = index;
@@ -39,7 +39,7 @@ void PieceBuilder::AddLineTo(const Eigen::Vector2d& to, int inner_points) {
 
 void PieceBuilder::AddInside(const std::string& landmark, const Eigen::Vector2d& p,
                              const std::string& datum) {
-  Landmark l;
+  PieceLandmark l;
   l.name = landmark;
   l.datum = datum;
   l.position = p;

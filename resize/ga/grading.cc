@@ -59,7 +59,7 @@ Pattern ScalePieces(const Pattern& pattern, const std::vector<double>& scales) {
     };
     for (Eigen::Index r = 0; r < piece.outline.rows(); ++r)
       piece.outline.row(r) = scale_point(piece.outline.row(r).transpose()).transpose();
-    for (Landmark& l : piece.landmarks)
+    for (PieceLandmark& l : piece.landmarks)
       if (l.vertex < 0) l.position = scale_point(l.position);
     piece.grain_start = scale_point(piece.grain_start);
     piece.grain_end = scale_point(piece.grain_end);

@@ -60,7 +60,7 @@ void ParsePieceExtras(const json& j, const std::string& where, Piece* piece) {
   if (j.contains("critical")) piece->critical = Get<std::vector<int>>(j, "critical", {}, where);
   if (j.contains("notches")) piece->notches = Get<std::vector<int>>(j, "notches", {}, where);
   for (const json& l : j.value("landmarks", json::array())) {
-    Landmark landmark;
+    PieceLandmark landmark;
     landmark.name = Require<std::string>(l, "name", where + ": landmark");
     const std::string lw = where + ": landmark '" + landmark.name + "'";
     landmark.datum = Get<std::string>(l, "datum", "", lw);
@@ -164,7 +164,7 @@ json PatternToJson(const Pattern& pattern) {
   json pieces = json::array();
   for (const Piece& p : pattern.pieces) {
     json landmarks = json::array();
-    for (const Landmark& l : p.landmarks) {
+    for (const PieceLandmark& l : p.landmarks) {
       json lj = {{"name", l.name}};
       if (!l.datum.empty()) lj["datum"] = l.datum;
       if (l.vertex >= 0)

@@ -14,7 +14,7 @@ int Piece::FindLandmark(const std::string& landmark) const {
 }
 
 Eigen::Vector2d Piece::LandmarkPosition(int index) const {
-  const Landmark& l = landmarks.at(index);
+  const PieceLandmark& l = landmarks.at(index);
   if (l.vertex >= 0) return outline.row(l.vertex).transpose();
   return l.position;
 }
@@ -71,7 +71,7 @@ void CheckPiece(const Piece& piece, const std::string& what) {
   for (int c : piece.critical) check_index(c, "critical point");
   for (int c : piece.notches) check_index(c, "notch");
   std::set<std::string> names;
-  for (const Landmark& l : piece.landmarks) {
+  for (const PieceLandmark& l : piece.landmarks) {
     if (!names.insert(l.name).second) throw InputError(where + ": duplicate landmark " + l.name);
     if (l.vertex >= 0) check_index(l.vertex, "landmark '" + l.name + "'");
     if (l.vertex < 0 && !l.position.allFinite())

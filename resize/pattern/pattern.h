@@ -28,7 +28,7 @@ namespace bespoke {
 
 using Outline = Eigen::Matrix<double, Eigen::Dynamic, 2>;  // #V x 2, mm
 
-struct Landmark {
+struct PieceLandmark {
   std::string name;   // unique on its piece, e.g. "cb_neck"
   std::string datum;  // body datum point it is tied to (catalogue name), may be empty
   int vertex = -1;    // outline index, or -1 for a point inside the piece
@@ -39,7 +39,7 @@ struct Piece {
   std::string name;           // unique in the pattern, e.g. "front"
   Outline outline;            // #V x 2 sew line, mm, counter-clockwise
   std::vector<int> critical;  // outline indices of critical points
-  std::vector<Landmark> landmarks;
+  std::vector<PieceLandmark> landmarks;
   std::vector<int> notches;  // outline indices
   bool has_grain = false;
   Eigen::Vector2d grain_start = Eigen::Vector2d::Zero();  // mm
