@@ -21,7 +21,17 @@ void WriteSyntheticBodyScan(const SyntheticScanOptions& o, const fs::path& file)
   // can work on (a bundle of cylinders is not one).
   ParametricBodyOptions shape;
   const double g = o.girth_scale;
+  // Lengths follow the stature (the default body's proportions), so a tall
+  // subject keeps a plausible crotch height / stature ratio (Check() allows
+  // 0.40-0.50: a 1920 mm person with the default 760 mm crotch is rejected).
+  const double length_scale = o.stature_mm / shape.stature_mm;
   shape.stature_mm = o.stature_mm;
+  for (double* length : {&shape.crotch_height_mm, &shape.arm_length_mm, &shape.stance_width_mm})
+    *length *= length_scale;
+  // The shoulder width is bounded by both the stature (0.18-0.30) and the chest
+  // girth / pi (1.0-1.6): the geometric mean of the two scales keeps it inside
+  // both for every stature and girth scale make_corpus draws.
+  shape.shoulder_width_mm *= std::sqrt(length_scale * o.girth_scale);
   for (double* girth : {&shape.neck_girth_mm, &shape.chest_girth_mm, &shape.bust_girth_mm,
                         &shape.under_bust_girth_mm, &shape.waist_girth_mm, &shape.middle_hip_girth_mm,
                         &shape.hip_girth_mm, &shape.upper_arm_girth_mm, &shape.wrist_girth_mm,
