@@ -4,7 +4,9 @@
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <exception>
+#include <string>
 #include <map>
 #include <new>
 
@@ -33,6 +35,19 @@ int Run(int argc, char** argv) {
   for (const bespoke::Command& command : bespoke::AllCommands()) {
     CLI::App* sub = app.add_subcommand(command.name, command.summary);
     runners[sub] = command.setup(*sub);
+  }
+  // The first word that is not a global flag names the subcommand: say so when
+  // it is none of them (CLI11 alone would only say that one is required).
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (!word.empty() && word[0] == '-') continue;
+    bool known = false;
+    for (const bespoke::Command& command : bespoke::AllCommands()) known = known || word == command.name;
+    if (!known) {
+      std::fprintf(stderr, "bespoke: unknown command '%s' (bespoke --help lists the commands)\n", word.c_str());
+      return 1;
+    }
+    break;
   }
   try {
     app.parse(argc, argv);
