@@ -1,6 +1,5 @@
-// The single-scan job's resize step (scan_steps.cc), in its own file: the
-// resize library's pattern types share names with measure's landmark types
-// (bespoke::Landmark), so the two are never included in one file.
+// The single-scan job's resize step (scan_steps.cc), in its own file so the
+// measure steps do not pull in the resize library's headers.
 #ifndef BESPOKE_PIPELINE_BATCH_SCAN_STEP_RESIZE_H_
 #define BESPOKE_PIPELINE_BATCH_SCAN_STEP_RESIZE_H_
 
