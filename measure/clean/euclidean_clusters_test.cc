@@ -24,7 +24,7 @@ Eigen::MatrixX3d Clumps(unsigned seed) {
   std::uniform_real_distribution<double> centre(0.0, 600.0);
   std::normal_distribution<double> spread(0.0, 8.0);
   Eigen::MatrixX3d points(6000, 3);
-  Eigen::Vector3d c;
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();  // set at i = 0
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
     if (i % 60 == 0) c = Eigen::Vector3d(centre(rng), centre(rng), centre(rng) / 4);
     points.row(i) = (c + Eigen::Vector3d(spread(rng), spread(rng), spread(rng))).transpose();

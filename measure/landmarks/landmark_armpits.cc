@@ -13,18 +13,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Closest pair (xy) between two row sets: their rows and distance.
-double ClosestPair(const Context& c, const std::vector<int>& a, const std::vector<int>& b, int* ra, int* rb) {
-  double best = kInf;
-  for (int i : a) {
-    for (int j : b) {
-      const double d = (c.points.row(i).head<2>() - c.points.row(j).head<2>()).squaredNorm();
-      if (d < best) best = d, *ra = i, *rb = j;
-    }
-  }
-  return std::sqrt(best);
-}
-
 // The lateral piece of slice `s` (not trunk, on the side) nearest `centre`
 // (xy) within `radius`; -1 when none.
 int LateralPieceNear(const Context& c, const Slice& s, int sign, const Eigen::Vector2d& centre, double radius) {

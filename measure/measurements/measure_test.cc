@@ -110,7 +110,7 @@ TEST(Measure, VirtualScanWithTrueLandmarksMatchesTheReference) {
     // 48 mm from the scan: lengths through it are flagged and bridged across
     // the hole; held to 10 mm (measured: -3, -2, +8 mm), not ISO's 5 mm.
     const bool bridged = Has(m->flags, "datum_off_scan");
-    if (bridged) EXPECT_NE(std::find(m->datum.begin(), m->datum.end(), "crotch"), m->datum.end()) << truth.name;
+    if (bridged) { EXPECT_NE(std::find(m->datum.begin(), m->datum.end(), "crotch"), m->datum.end()) << truth.name; }
     ++compared;
     if (std::abs(diff) <= (bridged ? 10.0 : Tolerance(truth))) ++within;
     else misses.push_back(truth.name);

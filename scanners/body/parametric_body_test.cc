@@ -309,8 +309,8 @@ TEST(ParametricBody, OptionsAreCheckedAndSetByName) {
   ParametricBodyDetails d;
   const Body body = GenerateParametricBody(man, &d);
   for (const AnalyticGirth& g : d.girths) {
-    if (g.measurement == "waist_girth") EXPECT_NEAR(g.girth_mm, man.waist_girth_mm, 1e-6);
-    if (g.measurement == "bust_girth") EXPECT_NEAR(g.girth_mm, man.bust_girth_mm, 1e-6);
+    if (g.measurement == "waist_girth") { EXPECT_NEAR(g.girth_mm, man.waist_girth_mm, 1e-6); }
+    if (g.measurement == "bust_girth") { EXPECT_NEAR(g.girth_mm, man.bust_girth_mm, 1e-6); }
   }
 }
 

@@ -70,8 +70,8 @@ TEST(Catalogue, NamesAreUniqueSnakeCaseAndDatumPointsExist) {
     EXPECT_TRUE(snake(m.name)) << m.name;
     for (const std::string& d : m.datum) EXPECT_TRUE(c.HasLandmark(d)) << m.name << ": " << d;
     for (const std::string& d : m.axis) EXPECT_TRUE(c.HasLandmark(d)) << m.name << ": " << d;
-    if (!m.valentina.empty()) EXPECT_TRUE(valentina.insert(m.valentina).second) << m.valentina;
-    if (!m.freesewing.empty()) EXPECT_TRUE(freesewing.insert(m.freesewing).second) << m.freesewing;
+    if (!m.valentina.empty()) { EXPECT_TRUE(valentina.insert(m.valentina).second) << m.valentina; }
+    if (!m.freesewing.empty()) { EXPECT_TRUE(freesewing.insert(m.freesewing).second) << m.freesewing; }
   }
 }
 

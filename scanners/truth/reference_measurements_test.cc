@@ -83,7 +83,7 @@ TEST(ReferenceMeasurements, DefaultParametricBodyMatchesItsConstruction) {
   EXPECT_NEAR(Get(r, "waist_to_knee").value_mm, At(body, "side_waist_right").z() - At(body, "knee_right").z(), 1e-9);
   EXPECT_NEAR(Get(r, "shoulder_width").value_mm, options.shoulder_width_mm, 1e-9);
   for (const ReferenceMeasurement& m : r.measurements)
-    if (m.kind == MeasurementKind::kHeight) EXPECT_GT(m.value_mm, 0) << m.name;
+    if (m.kind == MeasurementKind::kHeight) { EXPECT_GT(m.value_mm, 0) << m.name; }
 
   // Lengths: a geodesic chain is no shorter than the straight chain through
   // its datum points and, on a body, less than twice it; a right-side
@@ -100,7 +100,7 @@ TEST(ReferenceMeasurements, DefaultParametricBodyMatchesItsConstruction) {
     if (def.to_floor) chord += At(body, def.datum.back()).z(), left += At(body, Mirror(def.datum.back())).z();
     EXPECT_GE(m.value_mm, chord - 1e-6) << m.name;
     EXPECT_LT(m.value_mm, 2 * chord) << m.name;
-    if (def.side == "right") EXPECT_NEAR(m.value_mm, left, 1e-6 * m.value_mm) << m.name << ": left and right differ";
+    if (def.side == "right") { EXPECT_NEAR(m.value_mm, left, 1e-6 * m.value_mm) << m.name << ": left and right differ"; }
     ASSERT_GE(m.geometry.rows(), 2) << m.name;
     EXPECT_LT((m.geometry.row(0).transpose() - At(body, def.datum[0])).norm(), 1e-6) << m.name;
   }

@@ -51,7 +51,7 @@ TEST(TruthFile, ContractsSchemaWithDatumPointsAndGeometry) {
     EXPECT_EQ(m["datum"], def.datum);
     EXPECT_DOUBLE_EQ(m["value_mm"].get<double>(), truth.measurements[i].value_mm);
     EXPECT_TRUE(m["flags"].is_array());
-    if (def.method != MeasurementMethod::kHeight) EXPECT_GE(m["geometry"].size(), 2u) << def.name;
+    if (def.method != MeasurementMethod::kHeight) { EXPECT_GE(m["geometry"].size(), 2u) << def.name; }
   }
   EXPECT_TRUE(doc["skipped"].empty());
   EXPECT_EQ(doc["settings"]["datum_tolerance_mm"], 20);
