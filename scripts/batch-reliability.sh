@@ -10,7 +10,7 @@
 #      then --resume: summary.csv and failures.csv must be byte-identical to
 #      the uninterrupted run's, with no lost or duplicated rows.
 # Usage: scripts/batch-reliability.sh [WORK_DIR]   (default /tmp/bespoke-reliability)
-#   BUILD_DIR (default build), JOBS (default: all CPUs), POINTS (default 60000)
+#   BUILD_DIR (default build), JOBS (default: all CPUs), POINTS (default 100000)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${BUILD_DIR:-build}
@@ -18,7 +18,7 @@ BESPOKE=$PWD/$BUILD_DIR/bespoke
 CORPUS=$PWD/$BUILD_DIR/batch_corpus
 WORK=${1:-/tmp/bespoke-reliability}
 JOBS=${JOBS:-0}
-POINTS=${POINTS:-60000}
+POINTS=${POINTS:-100000}
 for tool in "$BESPOKE" "$CORPUS"; do
   [ -x "$tool" ] || { echo "missing $tool: build first (scripts/build.sh)" >&2; exit 2; }
 done
@@ -48,6 +48,16 @@ echo "exit code $rc; rows $rows; ok $ok; failed $failed (input_error $input_erro
 [ "$rows" -eq 100 ] && [ "$ok" -eq 90 ] && [ "$failed" -eq 10 ] && [ "$input_errors" -eq 10 ] \
   || fail "counts differ from 100 rows / 90 ok / 10 input_error"
 cut -d, -f1,3,6- "$WORK/out/failures.csv" | sed "s|$WORK/in/||g" | cut -c1-150
+# Every good scan measured: its measurements.json exists and holds measurements
+# (the summary's "measurements" column); skipped ones are listed with reasons.
+awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) { if ($i == "measurements") m = i; if ($i == "measurements_skipped") k = i } }
+         NR > 1 && $2 == "ok" { n++; if ($m + 0 < 1) bad++; if (min == "" || $m < min) min = $m;
+                                if ($m > max) max = $m; skipped += $k; if ($k > 0) with++ }
+         END { printf "measured: %d ok scans, %d-%d measurements each, %d skipped in %d scans\n", n, min, max, skipped, with;
+               exit bad > 0 }' "$WORK/out/summary.csv" || fail "an ok scan has no measurements"
+for f in "$WORK"/out/*/measurements.json; do
+  grep -q '"skipped": \[\]' "$f" || echo "  $(basename "$(dirname "$f")"): $(grep -o '"reason": "[^"]*"' "$f" | sort -u | head -3 | tr '\n' ' ')"
+done
 
 echo "== run 2: kill -9 after 30 scans, debris, --resume"
 "$BESPOKE" --quiet batch "$WORK/in" -o "$WORK/out2" --jobs "$JOBS" 2>/dev/null &
