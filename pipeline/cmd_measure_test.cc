@@ -60,7 +60,7 @@ TEST(MeasureCli, EveryOutputFromAVirtualScan) {
   EXPECT_EQ(doc["measurements"].size() + doc["skipped"].size(), 50u);
   EXPECT_GE(doc["measurements"].size(), 48u) << doc["skipped"].dump();
   for (const nlohmann::json& m : doc["measurements"])
-    if (m["name"] == "stature") EXPECT_NEAR(m["value_mm"].get<double>(), 1660.0, 4.0);  // mm, the body's
+    if (m["name"] == "stature") { EXPECT_NEAR(m["value_mm"].get<double>(), 1660.0, 4.0); }  // mm, the body's
   EXPECT_TRUE(doc["settings"].contains("measure"));
   EXPECT_EQ(doc["landmark_details"]["crown"]["flags"][0], "override");
   for (const char* f : {"m.csv", "m.vit", "fs.json", "m.png"}) EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;

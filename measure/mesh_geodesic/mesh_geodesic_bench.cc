@@ -173,7 +173,10 @@ void BenchMesh(const Config& config, const std::string& name, const TriangleMesh
   std::vector<double> exact;
   double cgal_time = NAN;
   if (n <= config.cgal_max) {
-    Row r{name, "CGAL", n};
+    Row r;
+    r.mesh = name;
+    r.algorithm = "CGAL";
+    r.vertices = n;
     const auto out = InChild([&] {
       const double t0 = Now();
       ExactGeodesics geodesics(mesh);
@@ -193,7 +196,10 @@ void BenchMesh(const Config& config, const std::string& name, const TriangleMesh
   }
   for (const bool accurate : {false, true}) {
     if (accurate && n > config.accurate_max) continue;
-    Row r{name, accurate ? "Alg2" : "Alg3", n};
+    Row r;
+    r.mesh = name;
+    r.algorithm = accurate ? "Alg2" : "Alg3";
+    r.vertices = n;
     double floor = 0;
     const auto out = InChild([&] {
       const double t0 = Now();
