@@ -6,6 +6,7 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "scanners/core/cell_key.h"
 #include "scanners/truth/convex_hull_2d.h"
 
 namespace bespoke::landmarks {
@@ -26,8 +27,6 @@ struct UnionFind {
   void Join(int a, int b) { parent[static_cast<size_t>(Find(a))] = Find(b); }
 };
 
-std::int64_t CellKey(std::int64_t ix, std::int64_t iy) { return (ix << 32) ^ (iy & 0xffffffff); }
-
 }  // namespace
 
 std::vector<Piece> SplitPieces(const Eigen::MatrixX3d& points, const std::vector<int>& rows,
@@ -42,7 +41,7 @@ std::vector<Piece> SplitPieces(const Eigen::MatrixX3d& points, const std::vector
   for (int i = 0; i < n; ++i) {
     std::int64_t ix, iy;
     cell_of(i, &ix, &iy);
-    cells[CellKey(ix, iy)].push_back(i);
+    cells[CellKey2(ix, iy)].push_back(i);
   }
   UnionFind uf(n);
   const double link2 = link_mm * link_mm;
@@ -52,7 +51,7 @@ std::vector<Piece> SplitPieces(const Eigen::MatrixX3d& points, const std::vector
     const Eigen::Vector2d p = points.row(rows[static_cast<size_t>(i)]).head<2>();
     for (std::int64_t dx = -1; dx <= 1; ++dx) {
       for (std::int64_t dy = -1; dy <= 1; ++dy) {
-        auto it = cells.find(CellKey(ix + dx, iy + dy));
+        auto it = cells.find(CellKey2(ix + dx, iy + dy));
         if (it == cells.end()) continue;
         for (int j : it->second) {
           if (j <= i || uf.Find(i) == uf.Find(j)) continue;

@@ -7,6 +7,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "scanners/core/cell_key.h"
 #include "scanners/core/errors.h"
 #include "scanners/truth/convex_hull_2d.h"
 
@@ -38,7 +39,7 @@ std::vector<int> Cluster(const std::vector<Vec2>& p, double gap, int* count) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
-  auto key = [](long long x, long long y) { return (x << 32) ^ (y & 0xffffffffLL); };
+  const auto key = [](long long x, long long y) { return CellKey2(x, y); };
   std::unordered_map<long long, std::vector<int>> cells;
   for (std::size_t i = 0; i < p.size(); ++i)
     cells[key(std::llround(std::floor(p[i].x() / gap)), std::llround(std::floor(p[i].y() / gap)))].push_back(static_cast<int>(i));
