@@ -37,7 +37,7 @@ endfunction()
 
 # bespoke_add_test(NAME <name> SOURCES ... LIBS ... [LABELS ...] [TIMEOUT s])
 # One GoogleTest binary per library; every TEST becomes a ctest test.
-# Labels: `shared` (reads ../shared, skips without it), `slow` (> 10 s).
+# Labels (one per binary): `shared` (reads ../shared, skips without it), `slow` (> 10 s).
 function(bespoke_add_test)
   if(NOT BESPOKE_BUILD_TESTS)
     return()
@@ -49,7 +49,12 @@ function(bespoke_add_test)
   add_executable(${ARG_NAME} ${ARG_SOURCES})
   target_link_libraries(${ARG_NAME} PRIVATE ${ARG_LIBS} bespoke_test_support
                                           GTest::gtest GTest::gmock GTest::gtest_main)
-  set(properties TIMEOUT ${ARG_TIMEOUT} LABELS "${ARG_LABELS}")
+  # Property names and values as one list: an empty value would vanish from
+  # it and shift every pair after it, so empty ones are left out.
+  set(properties TIMEOUT ${ARG_TIMEOUT})
+  if(ARG_LABELS)
+    list(APPEND properties LABELS "${ARG_LABELS}")
+  endif()
   if(BESPOKE_TEST_ENVIRONMENT)
     list(APPEND properties ENVIRONMENT "${BESPOKE_TEST_ENVIRONMENT}")
   endif()
