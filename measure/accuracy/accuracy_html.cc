@@ -4,23 +4,10 @@
 #include <map>
 
 #include "measure/accuracy/accuracy_report.h"
+#include "scanners/core/xml_escape.h"
 
 namespace bespoke {
 namespace {
-
-std::string Escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string Num(double v, int digits = 1) {
   const std::string s = FormatNumber(v, digits);
@@ -29,7 +16,7 @@ std::string Num(double v, int digits = 1) {
 
 std::string Verdict(const std::string& verdict) {
   const char* css = verdict == "pass" || verdict == "met" ? "pass" : verdict == "n/a" ? "na" : "fail";
-  return std::string("<td class=\"") + css + "\">" + Escape(verdict) + "</td>";
+  return std::string("<td class=\"") + css + "\">" + XmlEscape(verdict) + "</td>";
 }
 
 std::string Td(const std::string& s) { return "<td>" + s + "</td>"; }
@@ -52,11 +39,11 @@ std::string Targets(const AccuracyReport& report) {
           "</tr>\n";
   if (report.posture) {
     const PostureComparison& p = *report.posture;
-    html += "<tr><td>posture: every length of the " + Escape(p.pose_b) + " within " + Num(p.tolerance_mm, 0) +
-            " mm of the " + Escape(p.pose_a) + "</td><td>" +
+    html += "<tr><td>posture: every length of the " + XmlEscape(p.pose_b) + " within " + Num(p.tolerance_mm, 0) +
+            " mm of the " + XmlEscape(p.pose_a) + "</td><td>" +
             (p.error.empty() ? std::to_string(p.passed) + " of " + std::to_string(p.judged) +
                                    " lengths; largest difference " + Num(p.max_abs_difference_mm, 2) + " mm"
-                             : "did not run: " + Escape(p.error)) +
+                             : "did not run: " + XmlEscape(p.error)) +
             "</td>" + Verdict(p.pass() ? "met" : "missed") + "</tr>\n";
   }
   return html + "</table>\n";
@@ -77,12 +64,12 @@ std::string MeasurementTable(const AccuracyReport& report, const std::vector<std
     const int number = m.differences_mm.empty() ? 0 : ++counter[m.iso_class];
     const std::string hist = "plots/hist_" + m.name + ".png";
     const bool has_hist = std::find(plots.begin(), plots.end(), hist) != plots.end();
-    html += "<tr>" + Td(number ? std::to_string(number) : "") + Td(Escape(m.name)) + Td(Escape(m.kind)) +
+    html += "<tr>" + Td(number ? std::to_string(number) : "") + Td(XmlEscape(m.name)) + Td(XmlEscape(m.kind)) +
             Td(ToString(m.iso_class)) + Td(Num(m.tolerance_mm, 0)) + Td(std::to_string(s.n)) +
             Td(std::to_string(m.missing)) + Td(std::to_string(m.flagged)) + Td(Num(s.mean_mm, 2)) +
             Td(Num(s.sd_mm, 2)) + Td("[" + Num(s.ci_low_mm, 2) + ", " + Num(s.ci_high_mm, 2) + "]") +
             Td(Num(s.mae_mm, 2)) + Td(Num(s.max_abs_mm, 2)) + Verdict(ToString(m.verdict)) +
-            Td(has_hist ? "<a href=\"" + Escape(hist) + "\">histogram</a>" : "") + "</tr>\n";
+            Td(has_hist ? "<a href=\"" + XmlEscape(hist) + "\">histogram</a>" : "") + "</tr>\n";
   }
   return html + "</table>\n";
 }
@@ -90,7 +77,7 @@ std::string MeasurementTable(const AccuracyReport& report, const std::vector<std
 std::string LandmarkTable(const AccuracyReport& report) {
   const std::string& frame = report.summary.landmark_frame;
   std::string html = "<h2>Landmarks</h2>\n<p>Error = 3-D distance (mm) between the found and the true datum "
-                     "point, compared in the " + Escape(frame) + " frame" +
+                     "point, compared in the " + XmlEscape(frame) + " frame" +
                      (frame == "scanner" ? " (the found points mapped back through the cleaning's "
                                            "body_from_scanner, so the body frame's own error is not counted)"
                                          : "") +
@@ -98,7 +85,7 @@ std::string LandmarkTable(const AccuracyReport& report) {
                      "<th>median (mm)</th><th>mean (mm)</th><th>max (mm)</th></tr>\n";
   int number = 0;
   for (const LandmarkSummary& l : report.summary.landmarks) {
-    html += "<tr>" + Td(std::to_string(++number)) + Td(Escape(l.name)) + Td(std::to_string(l.n)) +
+    html += "<tr>" + Td(std::to_string(++number)) + Td(XmlEscape(l.name)) + Td(std::to_string(l.n)) +
             Td(std::to_string(l.missing)) + Td(Num(l.median_mm)) + Td(Num(l.mean_mm)) + Td(Num(l.max_mm)) +
             "</tr>\n";
   }
@@ -106,18 +93,18 @@ std::string LandmarkTable(const AccuracyReport& report) {
 }
 
 std::string PostureTable(const PostureComparison& p) {
-  std::string html = "<h2>Posture: " + Escape(p.pose_a) + " (arms " + Num(p.arm_a_deg, 0) + "&deg;) vs " +
-                     Escape(p.pose_b) + " (arms " + Num(p.arm_b_deg, 0) + "&deg;)</h2>\n";
-  if (!p.error.empty()) return html + "<p class=\"fail\">Did not run: " + Escape(p.error) + "</p>\n";
-  html += "<p>The same body scanned and measured in both poses. Lengths are judged: |" + Escape(p.pose_b) +
-          " &minus; " + Escape(p.pose_a) + "| &le; " + Num(p.tolerance_mm, 0) +
+  std::string html = "<h2>Posture: " + XmlEscape(p.pose_a) + " (arms " + Num(p.arm_a_deg, 0) + "&deg;) vs " +
+                     XmlEscape(p.pose_b) + " (arms " + Num(p.arm_b_deg, 0) + "&deg;)</h2>\n";
+  if (!p.error.empty()) return html + "<p class=\"fail\">Did not run: " + XmlEscape(p.error) + "</p>\n";
+  html += "<p>The same body scanned and measured in both poses. Lengths are judged: |" + XmlEscape(p.pose_b) +
+          " &minus; " + XmlEscape(p.pose_a) + "| &le; " + Num(p.tolerance_mm, 0) +
           " mm. The truth columns show how much the body itself changed between the poses. "
           "Numbers (#) are the x positions in the posture chart.</p>\n"
           "<table><tr><th>#</th><th>measurement</th><th>kind</th><th>measured A (mm)</th><th>measured B (mm)</th>"
           "<th>B &minus; A (mm)</th><th>truth A (mm)</th><th>truth B (mm)</th><th>verdict</th></tr>\n";
   int number = 0;
   for (const PostureRow& r : p.rows) {
-    html += "<tr>" + Td(r.judged ? std::to_string(++number) : "") + Td(Escape(r.name)) + Td(Escape(r.kind)) +
+    html += "<tr>" + Td(r.judged ? std::to_string(++number) : "") + Td(XmlEscape(r.name)) + Td(XmlEscape(r.kind)) +
             Td(Num(r.measured_a_mm)) + Td(Num(r.measured_b_mm)) + Td(Num(r.difference_mm)) +
             Td(Num(r.truth_a_mm)) + Td(Num(r.truth_b_mm)) +
             (r.judged ? Verdict(r.pass ? "pass" : "fail") : Td("shown only")) + "</tr>\n";
@@ -126,19 +113,19 @@ std::string PostureTable(const PostureComparison& p) {
 }
 
 std::string Image(const std::string& file) {
-  return "<figure><img src=\"" + Escape(file) + "\" alt=\"" + Escape(file) + "\"></figure>\n";
+  return "<figure><img src=\"" + XmlEscape(file) + "\" alt=\"" + XmlEscape(file) + "\"></figure>\n";
 }
 
 }  // namespace
 
 std::string AccuracyHtml(const AccuracyReport& report, const std::vector<std::string>& plots) {
   std::string html =
-      "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" + Escape(report.title) +
+      "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" + XmlEscape(report.title) +
       "</title>\n<style>body{font-family:sans-serif;margin:2em;max-width:1400px}"
       "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:3px 8px;"
       "text-align:right}td:nth-child(-n+4),th{text-align:left}.pass{background:#dfd}.fail{background:#fdd}"
       ".na{background:#eee}img{max-width:100%}pre{background:#f6f6f6;padding:1em}</style></head><body>\n";
-  html += "<h1>" + Escape(report.title) + "</h1>\n<p>Created " + Escape(report.created_utc) + "; " +
+  html += "<h1>" + XmlEscape(report.title) + "</h1>\n<p>Created " + XmlEscape(report.created_utc) + "; " +
           std::to_string(report.summary.subjects) + " subjects compared, " +
           std::to_string(report.failures.size()) + " failed. Tables: <a href=\"summary.csv\">summary.csv</a>, "
           "<a href=\"measurements.csv\">measurements.csv</a>, <a href=\"landmarks.csv\">landmarks.csv</a>, "
@@ -163,12 +150,12 @@ std::string AccuracyHtml(const AccuracyReport& report, const std::vector<std::st
   if (!report.failures.empty()) {
     html += "<h2>Subjects that failed</h2>\n<table><tr><th>subject</th><th>stage</th><th>error</th></tr>\n";
     for (const SubjectFailure& f : report.failures) {
-      html += "<tr><td>" + Escape(f.subject) + "</td><td>" + Escape(f.stage) + "</td><td>" + Escape(f.error) +
+      html += "<tr><td>" + XmlEscape(f.subject) + "</td><td>" + XmlEscape(f.stage) + "</td><td>" + XmlEscape(f.error) +
               "</td></tr>\n";
     }
     html += "</table>\n";
   }
-  html += "<h2>Settings</h2>\n<pre>" + Escape(report.settings.dump(2)) + "</pre>\n</body></html>\n";
+  html += "<h2>Settings</h2>\n<pre>" + XmlEscape(report.settings.dump(2)) + "</pre>\n</body></html>\n";
   return html;
 }
 

@@ -5,24 +5,10 @@
 
 #include "scanners/core/atomic_file.h"
 #include "scanners/core/json_io.h"
+#include "scanners/core/xml_escape.h"
 
 namespace bespoke {
 namespace {
-
-std::string XmlEscape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 }  // namespace
 

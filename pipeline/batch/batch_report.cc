@@ -12,26 +12,13 @@
 #include "scanners/core/atomic_file.h"
 #include "scanners/core/json_io.h"
 #include "scanners/render/plot.h"
+#include "scanners/core/xml_escape.h"
 
 namespace bespoke {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-
-std::string Escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 double ParseUtc(const std::string& text) {
   std::tm tm{};
@@ -76,7 +63,7 @@ std::string Histogram(const fs::path& results_dir, const std::string& name, cons
   chart.series.push_back(HistogramSeries(values, std::clamp<int>(values.size() / 3, 5, 20), ""));
   const std::string file = "report/" + name + ".png";
   WriteChart(chart, results_dir / file);
-  return "<figure><img src=\"" + Escape(file) + "\" alt=\"" + Escape(title) + "\"></figure>\n";
+  return "<figure><img src=\"" + XmlEscape(file) + "\" alt=\"" + XmlEscape(title) + "\"></figure>\n";
 }
 
 std::string Plots(const fs::path& results_dir, const BatchResultsInput& input) {
@@ -134,8 +121,8 @@ std::string AttemptsSection(const BatchResultsInput& input, int* ran_total, doub
     html += fmt::format(
         "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
         "<td>{}</td><td>{:.1f}</td><td>{}</td></tr>\n",
-        Escape(a.value("shard", "")), Escape(a.value("label", "")), Escape(a.value("host", "")),
-        Escape(a.value("started_utc", "")), Escape(status),
+        XmlEscape(a.value("shard", "")), XmlEscape(a.value("label", "")), XmlEscape(a.value("host", "")),
+        XmlEscape(a.value("started_utc", "")), XmlEscape(status),
         a.contains("exit_code") ? std::to_string(a.value("exit_code", 0)) : "",
         a.value("skipped", 0), ran, wall, wall > 0 ? fmt::format("{:.1f}", 60.0 * ran / wall) : "");
   }
@@ -155,20 +142,20 @@ std::string BatchReportHtml(const fs::path& results_dir, const BatchResultsInput
                             const BatchCounts& counts) {
   CreateDirectories(results_dir / "report");
   std::string html = "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" +
-                     Escape(input.title) +
+                     XmlEscape(input.title) +
                      "</title><style>body{font-family:sans-serif;margin:2em;max-width:1200px}"
                      "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;"
                      "padding:3px 8px;text-align:left;font-size:90%}th{background:#eee}"
                      ".failed{color:#a00}figure{display:inline-block;margin:4px}</style></head>"
-                     "<body>\n<h1>" + Escape(input.title) + "</h1>\n";
-  html += "<p>Generated " + UtcNow() + " by bespoke " + Escape(BuildVersions().value("bespoke", "")) + ".</p>\n";
+                     "<body>\n<h1>" + XmlEscape(input.title) + "</h1>\n";
+  html += "<p>Generated " + UtcNow() + " by bespoke " + XmlEscape(BuildVersions().value("bespoke", "")) + ".</p>\n";
   std::map<std::string, int> kinds;
   for (const ScanOutcome& o : input.outcomes) if (!o.ok()) ++kinds[o.failure_kind()];
   html += fmt::format("<h2>Counts</h2><table><tr><th>planned</th><th>ok</th><th>failed</th>"
                       "<th>not processed</th></tr><tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
                       "</tr></table>\n<p>Exit code {}.",
                       counts.planned, counts.ok, counts.failed, counts.not_processed, counts.ExitCode());
-  for (const auto& [kind, n] : kinds) html += fmt::format(" {}: {}.", Escape(kind), n);
+  for (const auto& [kind, n] : kinds) html += fmt::format(" {}: {}.", XmlEscape(kind), n);
   html += "</p>\n";
 
   int ran = 0;
@@ -198,9 +185,9 @@ std::string BatchReportHtml(const fs::path& results_dir, const BatchResultsInput
   for (const ScanOutcome& o : input.outcomes) {
     if (o.ok()) continue;
     const std::string folder = o.folder.lexically_relative(results_dir).generic_string();
-    html += "<tr class=\"failed\"><td>" + Escape(o.entry.id) + "</td><td>" + Escape(o.entry.path.string()) +
-            "</td><td>" + Escape(o.failure_kind()) + "</td><td>" + Escape(o.failure_message()) +
-            "</td><td><a href=\"" + Escape(folder + "/run.log") + "\">run.log</a></td></tr>\n";
+    html += "<tr class=\"failed\"><td>" + XmlEscape(o.entry.id) + "</td><td>" + XmlEscape(o.entry.path.string()) +
+            "</td><td>" + XmlEscape(o.failure_kind()) + "</td><td>" + XmlEscape(o.failure_message()) +
+            "</td><td><a href=\"" + XmlEscape(folder + "/run.log") + "\">run.log</a></td></tr>\n";
   }
   if (counts.failed + counts.not_processed > 0) html += "</table>\n";
 
@@ -210,12 +197,12 @@ std::string BatchReportHtml(const fs::path& results_dir, const BatchResultsInput
   for (const ScanOutcome& o : input.outcomes) {
     const std::string folder = o.folder.lexically_relative(results_dir).generic_string();
     html += fmt::format("<tr{}><td>{}</td><td>{}</td><td>{}</td><td><a href=\"{}/\">{}</a></td></tr>\n",
-                        o.ok() ? "" : " class=\"failed\"", Escape(o.entry.id),
-                        o.ok() ? "ok" : Escape(o.failure_kind()),
+                        o.ok() ? "" : " class=\"failed\"", XmlEscape(o.entry.id),
+                        o.ok() ? "ok" : XmlEscape(o.failure_kind()),
                         o.record ? fmt::format("{:.2f}", o.record->time_s) : "",
-                        Escape(folder), Escape(folder));
+                        XmlEscape(folder), XmlEscape(folder));
   }
-  html += "</table>\n<h2>Settings</h2>\n<pre>" + Escape(input.settings.dump(2)) + "</pre>\n</body></html>\n";
+  html += "</table>\n<h2>Settings</h2>\n<pre>" + XmlEscape(input.settings.dump(2)) + "</pre>\n</body></html>\n";
   return html;
 }
 

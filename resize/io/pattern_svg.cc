@@ -7,6 +7,7 @@
 #include "resize/pattern/geometry.h"
 #include "scanners/core/atomic_file.h"
 #include "scanners/core/errors.h"
+#include "scanners/core/xml_escape.h"
 
 namespace bespoke {
 namespace {
@@ -15,23 +16,6 @@ std::string Num(double v) {
   char buffer[32];
   std::snprintf(buffer, sizeof(buffer), "%.2f", v);
   return buffer;
-}
-
-std::string Escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '&')
-      out += "&amp;";
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '"')
-      out += "&quot;";
-    else
-      out += c;
-  }
-  return out;
 }
 
 struct Placement {
@@ -53,7 +37,7 @@ Eigen::Vector2d ToSvg(const Eigen::Vector2d& p, const Placement& at) {
 
 void DrawPiece(const SvgOptions& options, const Piece& piece, const Placement& at,
                std::ostream& out) {
-  out << "  <g id=\"" << Escape(piece.name) << "\">\n";
+  out << "  <g id=\"" << XmlEscape(piece.name) << "\">\n";
   if (options.seam_allowance_mm > 0)
     out << "    <path d=\""
         << Path(OffsetOutline(piece.outline, options.seam_allowance_mm), at, true)
@@ -90,9 +74,9 @@ void DrawPiece(const SvgOptions& options, const Piece& piece, const Placement& a
   if (piece.on_fold) cut += " on fold";
   out << "    <text x=\"" << Num(centre.x()) << "\" y=\"" << Num(centre.y())
       << "\" font-family=\"sans-serif\" font-size=\"8\" text-anchor=\"middle\">"
-      << Escape(piece.name) << "</text>\n";
+      << XmlEscape(piece.name) << "</text>\n";
   out << "    <text x=\"" << Num(centre.x()) << "\" y=\"" << Num(centre.y() + 10)
-      << "\" font-family=\"sans-serif\" font-size=\"5\" text-anchor=\"middle\">" << Escape(cut)
+      << "\" font-family=\"sans-serif\" font-size=\"5\" text-anchor=\"middle\">" << XmlEscape(cut)
       << "</text>\n  </g>\n";
 }
 
@@ -128,9 +112,9 @@ std::string PatternToSvg(const SvgOptions& options, const Pattern& pattern) {
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << Num(width) << "mm\" height=\""
       << Num(height) << "mm\" viewBox=\"0 0 " << Num(width) << " " << Num(height) << "\">\n"
-      << "  <title>" << Escape(pattern.name) << "</title>\n"
+      << "  <title>" << XmlEscape(pattern.name) << "</title>\n"
       << "  <text x=\"" << Num(margin) << "\" y=\"" << Num(margin)
-      << "\" font-family=\"sans-serif\" font-size=\"10\">" << Escape(pattern.name)
+      << "\" font-family=\"sans-serif\" font-size=\"10\">" << XmlEscape(pattern.name)
       << " - 1:1, millimetres; sew lines solid, cut lines dashed ("
       << Num(options.seam_allowance_mm) << " mm allowance)</text>\n"
       << "  <rect x=\"" << Num(margin) << "\" y=\"" << Num(margin + 8)
