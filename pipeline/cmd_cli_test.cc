@@ -7,11 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <set>
-
-#include <nlohmann/json.hpp>
-
 #include "pipeline/commands.h"
+#include "tests/support/draft_measurements.h"
 #include "tests/support/run_command.h"
 #include "tests/support/test_support.h"
 
@@ -61,14 +58,7 @@ class CliProgress : public ::testing::Test {
   void SetUp() override {
     const auto draft = RunCommand(Binary() + " --quiet draft --design shirt -o " + Quote(dir_ / "draft"), dir_.path());
     ASSERT_EQ(draft.exit_code, 0) << draft.err;
-    const nlohmann::json d = nlohmann::json::parse(ReadText(dir_ / "draft" / "draft.json"));
-    nlohmann::json list = nlohmann::json::array();
-    std::set<std::string> seen;
-    for (const auto& b : d.at("bindings"))
-      if (seen.insert(b.at("measurement").get<std::string>()).second)
-        list.push_back({{"name", b.at("measurement")}, {"value_mm", 1.05 * b.at("body_mm").get<double>()}, {"flags", nlohmann::json::array()}});
-    std::ofstream(dir_ / "body.json") << nlohmann::json{{"format", "bespoke-measurements"}, {"version", 1},
-                                                       {"units", "mm"}, {"measurements", list}}.dump();
+    std::ofstream(dir_ / "body.json") << testing::ScaledDraftMeasurements(dir_ / "draft" / "draft.json", 1.05).dump();
   }
   std::string Resize(const std::string& global, const std::string& out) const {
     return Binary() + " " + global + " resize --design shirt --measurements " + Quote(dir_ / "body.json") +

@@ -8,10 +8,10 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <set>
 
 #include <nlohmann/json.hpp>
 
+#include "tests/support/draft_measurements.h"
 #include "tests/support/run_command.h"
 #include "tests/support/test_support.h"
 
@@ -32,19 +32,6 @@ testing::CommandResult Bespoke(const std::string& args, const TempDir& dir) {
   return RunCommand(std::string("'") + BESPOKE_BINARY + "' --quiet " + args, dir.path());
 }
 
-// The measurements the standard draft was made for, from draft.json, times `scale`.
-nlohmann::json ScaledMeasurements(const std::filesystem::path& draft_json, double scale) {
-  const nlohmann::json draft = nlohmann::json::parse(ReadText(draft_json));
-  nlohmann::json measurements = nlohmann::json::array();
-  std::set<std::string> seen;
-  for (const auto& b : draft.at("bindings")) {
-    const std::string name = b.at("measurement");
-    if (!seen.insert(name).second) continue;
-    measurements.push_back({{"name", name}, {"value_mm", scale * b.at("body_mm").get<double>()}, {"flags", {}}});
-  }
-  return {{"format", "bespoke-measurements"}, {"version", 1}, {"units", "mm"}, {"measurements", measurements}};
-}
-
 TEST(ResizeCli, DraftThenFitAShirtToALargerBody) {
   TempDir dir;
   const auto draft = Bespoke("draft --design shirt -o " + Quote(dir / "draft"), dir);
@@ -52,7 +39,7 @@ TEST(ResizeCli, DraftThenFitAShirtToALargerBody) {
   for (const char* f : {"pattern.json", "pattern.svg", "pattern.dxf", "draft.json"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / "draft" / f)) << f;
   }
-  std::ofstream(dir / "big.json") << ScaledMeasurements(dir / "draft" / "draft.json", 1.08).dump(1);
+  std::ofstream(dir / "big.json") << testing::ScaledDraftMeasurements(dir / "draft" / "draft.json", 1.08).dump(1);
   const auto fit = Bespoke("resize --design shirt --measurements " + Quote(dir / "big.json") +
                                " --population 40 --generations 30 -o " + Quote(dir / "fit"),
                            dir);

@@ -168,9 +168,8 @@ struct Occlusion {
 };
 
 Occlusion CheckOcclusion(const Body& body, const ScanSimOptions& so, const ScanSimResult& scan,
-                         const std::string& landmark, double radius,
-                         const Eigen::Vector3d& offset = Eigen::Vector3d::Zero()) {
-  const Eigen::Vector3d centre = PositionOf(body.mesh, body.landmarks.at(landmark)) + offset;
+                         const std::string& landmark, double radius) {
+  const Eigen::Vector3d centre = PositionOf(body.mesh, body.landmarks.at(landmark));
   std::vector<Eigen::Vector3d> samples;
   const TriangleMesh& m = body.mesh;
   for (Eigen::Index f = 0; f < m.num_faces(); ++f) {
