@@ -1,5 +1,6 @@
 #include "resize/designs/body_variants.h"
 
+#include <iterator>
 #include <random>
 
 #include "resize/designs/designs.h"
@@ -14,10 +15,14 @@ MeasurementSet VariedMeasurements(const std::string& design, std::uint64_t seed)
   const double l = length(rng);
   MeasurementSet m = BaseMeasurements(design);
   for (auto& [name, value] : m) {
+    if (IsDerivedMeasurement(name)) continue;  // recomputed below, not drawn
     const bool is_girth = name.find("_girth") != std::string::npos || name == "back_width" ||
                           name == "armhole_length";
     value *= (is_girth ? g : l) * jitter(rng);
   }
+  for (auto it = m.begin(); it != m.end();)
+    it = IsDerivedMeasurement(it->first) ? m.erase(it) : std::next(it);
+  AddDerivedMeasurements(&m, "varied measurements for " + design);
   return m;
 }
 

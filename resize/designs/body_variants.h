@@ -6,7 +6,8 @@
 // standard size) and every length by l in [0.90, 1.12], independently, then
 // each measurement by its own factor in [0.94, 1.06]: so proportions differ
 // from the standard figure (a stocky or a lanky build), which is what
-// proportional grading cannot follow. Deterministic for a seed.
+// proportional grading cannot follow. Derived measurements (body_rise) are
+// not drawn but derived from the drawn ones. Deterministic for a seed.
 #ifndef BESPOKE_RESIZE_DESIGNS_BODY_VARIANTS_H_
 #define BESPOKE_RESIZE_DESIGNS_BODY_VARIANTS_H_
 

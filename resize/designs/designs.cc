@@ -17,7 +17,11 @@ MeasurementSet BaseMeasurements(const std::string& design) {
             {"back_width", 390},   {"armhole_length", 460}, {"waist_to_hip", 200},
             {"arm_length", 640},   {"wrist_girth", 175}};
   if (design == "trousers")
-    return {{"waist_girth", 840}, {"hip_girth", 1000}, {"inside_leg", 810}, {"waist_height", 1060}};
+    return {{"waist_girth", 840},
+            {"hip_girth", 1000},
+            {"inside_leg", 810},
+            {"waist_height", 1060},
+            {"body_rise", 250}};  // derived: waist_height - inside_leg
   throw InputError("unknown design '" + design + "' (known: shirt, trousers)");
 }
 
@@ -27,7 +31,9 @@ double Need(const MeasurementSet& m, const std::string& name, const std::string&
   return it->second;
 }
 
-Pattern DraftDesign(const std::string& design, const MeasurementSet& measurements) {
+Pattern DraftDesign(const std::string& design, const MeasurementSet& given) {
+  MeasurementSet measurements = given;
+  AddDerivedMeasurements(&measurements, "design " + design);
   Pattern pattern;
   if (design == "shirt")
     pattern = DraftShirt(measurements);

@@ -27,7 +27,9 @@ PatternDistance ComparePatterns(const Pattern& a, const Pattern& b) {
 }
 
 FitEvidence EvaluateFit(const ResizeOptions& options, const std::string& design,
-                        const MeasurementSet& body) {
+                        const MeasurementSet& given, FitPatterns* patterns) {
+  MeasurementSet body = given;
+  AddDerivedMeasurements(&body, "body");
   const Pattern base = DraftDesign(design, BaseMeasurements(design));
   const Pattern direct = DraftDesign(design, body);
   const ResizeResult r = ResizePattern(options, base, body, nullptr);
@@ -48,6 +50,7 @@ FitEvidence EvaluateFit(const ResizeOptions& options, const std::string& design,
                  std::abs(BindingValue(r.seed, b) - body.at(b.measurement) - b.ease_mm));
   e.time_s = r.ga_time_s + r.polish_time_s;
   e.polish_start = r.polish_start;
+  if (patterns) *patterns = FitPatterns{r.fitted, direct, r.seed};
   return e;
 }
 

@@ -36,10 +36,19 @@ struct FitEvidence {
   std::string polish_start;  // "ga" or "seed" (ResizeResult::polish_start)
 };
 
+// The three patterns EvaluateFit compares (for inspecting a result).
+struct FitPatterns {
+  Pattern fitted;   // GA + polish
+  Pattern direct;   // drafted for the body
+  Pattern grading;  // proportional grading (Algorithm 6)
+};
+
 // Resizes DraftDesign(design, base) to `body` and compares with
-// DraftDesign(design, body) and with ProportionalGrade.
+// DraftDesign(design, body) and with ProportionalGrade. Derived measurements
+// are added to `body` first (AddDerivedMeasurements). With `patterns`, the
+// compared patterns are returned there.
 FitEvidence EvaluateFit(const ResizeOptions& options, const std::string& design,
-                        const MeasurementSet& body);
+                        const MeasurementSet& body, FitPatterns* patterns = nullptr);
 
 }  // namespace bespoke
 

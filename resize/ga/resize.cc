@@ -158,8 +158,10 @@ void ResizeOptions::Check() const {
 }
 
 ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& base,
-                           const MeasurementSet& body, Progress* progress) {
+                           const MeasurementSet& given, Progress* progress) {
   options.Check();
+  MeasurementSet body = given;
+  AddDerivedMeasurements(&body, "the measurements");
   ValidatePattern(base, "pattern '" + base.name + "'");
   if (base.bindings.empty())
     throw InputError("pattern '" + base.name + "' has no measurement bindings to fit");

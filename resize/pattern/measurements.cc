@@ -17,13 +17,31 @@ const std::vector<std::string>& CoreMeasurementNames() {
       "shoulder_length",  "across_shoulder", "back_width",       "front_width",
       "armhole_length",   "arm_length",      "sleeve_length",    "waist_to_hip",
       "crotch_length",    "inside_leg",      "outseam",          "waist_to_knee",
-      "waist_height"};
+      "waist_height",     "body_rise"};
   return names;
 }
 
 bool IsCoreMeasurement(const std::string& name) {
   const auto& names = CoreMeasurementNames();
   return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+bool IsDerivedMeasurement(const std::string& name) { return name == "body_rise"; }
+
+void AddDerivedMeasurements(MeasurementSet* values, const std::string& what) {
+  const auto height = values->find("waist_height"), leg = values->find("inside_leg");
+  if (height == values->end() || leg == values->end()) return;
+  const double rise = height->second - leg->second;
+  const auto given = values->find("body_rise");
+  if (given == values->end()) {
+    if (rise > 0) values->emplace("body_rise", rise);
+    return;
+  }
+  constexpr double kAgreementMm = 1;
+  if (!(std::abs(given->second - rise) <= kAgreementMm))
+    throw InputError(what + ": measurement 'body_rise' (" + std::to_string(given->second) +
+                     " mm) is not waist_height - inside_leg (" + std::to_string(rise) +
+                     " mm); it is derived from them, leave it out");
 }
 
 MeasurementSet MeasurementsFromJson(const nlohmann::json& document, const std::string& what) {
@@ -45,6 +63,7 @@ MeasurementSet MeasurementsFromJson(const nlohmann::json& document, const std::s
     if (!values.emplace(name, value).second)
       throw InputError(what + ": measurement '" + name + "' appears twice");
   }
+  AddDerivedMeasurements(&values, what);
   return values;
 }
 

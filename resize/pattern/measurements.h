@@ -18,12 +18,32 @@ namespace bespoke {
 using MeasurementSet = std::map<std::string, double>;  // name -> value (mm)
 
 // The core measurement names of docs/contracts.md (bindings must use these).
+// They include the derived measurements below.
 const std::vector<std::string>& CoreMeasurementNames();
 bool IsCoreMeasurement(const std::string& name);
 
-// Reads a measurement document. Throws InputError naming `file` when it is not
-// a JSON object with a "measurements" array of {name, value_mm} entries with
-// finite positive values, or when a name repeats.
+// Derived measurements: computed from other measurements, so a document need
+// not give them. One so far:
+//   body_rise = waist_height - inside_leg (mm), the rise the trouser draft
+//   places its crotch line by. It is not the catalogue's crotch_depth (the
+//   vertical side-waist-to-crotch distance): inside_leg runs from the crotch
+//   to the inside ankle, so body_rise is about crotch_depth + ankle height.
+bool IsDerivedMeasurement(const std::string& name);
+
+// Adds to `values` every derived measurement whose inputs it has and that it
+// lacks (only when the derived value is positive). A derived measurement
+// that `values` already gives must agree with its derivation within 1 mm:
+// InputError("<what>: measurement 'body_rise' (x mm) is not waist_height -
+// inside_leg (y mm) ...") otherwise. ReadMeasurements, MeasurementsFromJson,
+// DraftDesign and ResizePattern call it, so sets read or drafted from always
+// carry body_rise when they have waist_height and inside_leg.
+void AddDerivedMeasurements(MeasurementSet* values, const std::string& what);
+
+// Reads a measurement document and adds the derived measurements
+// (AddDerivedMeasurements). Throws InputError naming `file` when it is not a
+// JSON object with a "measurements" array of {name, value_mm} entries with
+// finite positive values, when a name repeats, or when a given derived
+// measurement disagrees with its derivation.
 MeasurementSet ReadMeasurements(const std::filesystem::path& file);
 MeasurementSet MeasurementsFromJson(const nlohmann::json& document, const std::string& what);
 

@@ -6,10 +6,12 @@
 // or the GA not closer to the direct draft than grading is, by mean distance).
 //
 //   resize_evidence [--design shirt|trousers|both] [--bodies 20] [--population 400]
-//                   [--generations 200] [--truth-dir DIR]
+//                   [--generations 200] [--truth-dir DIR] [--write DIR]
 // With --truth-dir, the bodies are DIR/subject_*/truth.json (from
 // `bespoke synth-set`, measurements in the contracts.md schema); without it,
-// generated measurement sets (resize/designs/body_variants.h).
+// generated measurement sets (resize/designs/body_variants.h). With --write,
+// DIR/<design>-<body>/ gets measurements.json and the fitted, drafted and
+// graded patterns (fitted.json, draft.json, grading.json) for inspection.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -21,6 +23,8 @@
 #include "resize/designs/body_variants.h"
 #include "resize/designs/designs.h"
 #include "resize/ga/evidence.h"
+#include "resize/io/pattern_json.h"
+#include "scanners/core/json_io.h"
 #include "scanners/core/errors.h"
 
 int main(int argc, char** argv) {
@@ -28,10 +32,10 @@ int main(int argc, char** argv) {
   ResizeOptions options;
   int count = 20;
   std::string which = "both";
-  std::filesystem::path truth_dir;
+  std::filesystem::path truth_dir, write_dir;
   const char* usage =
       "usage: resize_evidence [--design shirt|trousers|both] [--bodies 20] [--population 400]\n"
-      "                       [--generations 200] [--truth-dir DIR]\n";
+      "                       [--generations 200] [--truth-dir DIR] [--write DIR]\n";
   for (int i = 1; i < argc; i += 2) {
     const bool has_value = i + 1 < argc;
     if (!std::strcmp(argv[i], "--population") && has_value)
@@ -44,6 +48,8 @@ int main(int argc, char** argv) {
       which = argv[i + 1];
     else if (!std::strcmp(argv[i], "--truth-dir") && has_value)
       truth_dir = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--write") && has_value)
+      write_dir = argv[i + 1];
     else {
       std::fputs(usage, stderr);
       return std::strcmp(argv[i], "--help") && std::strcmp(argv[i], "-h") ? 1 : 0;
@@ -80,7 +86,16 @@ int main(int argc, char** argv) {
         }
         name = truths[b].parent_path().filename().string();
       }
-      const FitEvidence e = EvaluateFit(options, design, body);
+      FitPatterns patterns;
+      const FitEvidence e = EvaluateFit(options, design, body, &patterns);
+      if (!write_dir.empty()) {
+        const std::filesystem::path dir = write_dir / (design + "-" + name);
+        std::filesystem::create_directories(dir);
+        WriteJsonFile(dir / "measurements.json", MeasurementsToJson(body));
+        WritePatternJson(patterns.fitted, dir / "fitted.json");
+        WritePatternJson(patterns.direct, dir / "draft.json");
+        WritePatternJson(patterns.grading, dir / "grading.json");
+      }
       const bool ok = e.max_binding_error_mm <= 1 && e.max_seam_mismatch_mm <= 1 &&
                       e.outlines_simple && e.ga_to_draft.mean_mm < e.grading_to_draft.mean_mm;
       failures += ok ? 0 : 1;
