@@ -12,7 +12,8 @@
 //   a quarter of the rise, quarter-seat widths, fork extensions, knee line
 //   above half the leg, raised and sloped centre back): front, back (cut 2
 //   each), waistband (cut 2). Uses waist_girth, hip_girth, inside_leg,
-//   waist_height.
+//   waist_height, and binds the derived body_rise (= waist_height -
+//   inside_leg, measurements.h) that places its crotch line.
 // Every piece carries landmarks (tied to body datum names), critical points,
 // notches, a grain line; seams and measurement bindings are included, with the
 // design ease of each binding and seam taken from the draft itself, so the
@@ -33,12 +34,15 @@ namespace bespoke {
 // "shirt", "trousers".
 const std::vector<std::string>& DesignNames();
 
-// The measurements the design is drafted from, with their standard-size
-// values (a men's 100 cm chest / 100 cm seat size).
+// The measurements the design is drafted from and bound to, with their
+// standard-size values (a men's 100 cm chest / 100 cm seat size); derived
+// ones (measurements.h) are listed with their derived values.
 MeasurementSet BaseMeasurements(const std::string& design);
 
 // Drafts `design` for `measurements` (only the names BaseMeasurements lists
-// are read). Throws InputError for an unknown design, a missing measurement,
+// are read; derived ones are added first, AddDerivedMeasurements). Throws
+// InputError for an unknown design, a missing measurement, a derived one
+// that disagrees with its derivation,
 // or measurements so far out of range that the draft folds over (self-
 // intersecting outline).
 Pattern DraftDesign(const std::string& design, const MeasurementSet& measurements);

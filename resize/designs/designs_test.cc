@@ -34,6 +34,38 @@ TEST(Designs, VertexCountsDoNotDependOnMeasurements) {
   }
 }
 
+TEST(Designs, TrouserRiseBindingFollowsTheDraftForOtherBodies) {
+  // The rise binding measures the crotch depth the draft sets from body_rise
+  // (= waist_height - inside_leg): a draft for another body meets it with the
+  // base draft's ease to within 0.2 mm (its two terms are 10 and 2 mm off
+  // the vertical).
+  const Pattern base = DraftDesign("trousers", BaseMeasurements("trousers"));
+  int rise = -1;
+  for (size_t b = 0; b < base.bindings.size(); ++b)
+    if (base.bindings[b].measurement == "body_rise") rise = static_cast<int>(b);
+  ASSERT_GE(rise, 0);
+  for (double extra : {-40.0, 60.0}) {
+    MeasurementSet m = BaseMeasurements("trousers");
+    m.erase("body_rise");
+    m["waist_height"] += extra;  // same leg, longer or shorter rise
+    m["waist_girth"] *= 1.2;
+    m["hip_girth"] *= 0.9;
+    const Pattern p = DraftDesign("trousers", m);
+    EXPECT_NEAR(BindingValue(p, base.bindings[rise]),
+                m.at("waist_height") - m.at("inside_leg") + base.bindings[rise].ease_mm, 0.2)
+        << extra;
+    EXPECT_NEAR(BindingValue(p, base.bindings[rise]) - BindingValue(base, base.bindings[rise]),
+                extra, 0.2)
+        << extra;
+  }
+}
+
+TEST(Designs, DraftingRejectsABodyRiseThatIsNotWaistHeightMinusInsideLeg) {
+  MeasurementSet m = BaseMeasurements("trousers");
+  m["body_rise"] += 30;
+  EXPECT_THROW(DraftDesign("trousers", m), InputError);
+}
+
 TEST(Designs, ShirtChestFollowsAldrich) {
   // Aldrich: 1-4 = half chest + 12 cm, so the drafted chest line (back + front,
   // times two) is the chest girth + 24 cm: the binding's ease must be 240 mm.

@@ -8,7 +8,8 @@
 // are left out (the waist is shaped at the side seam), see docs/resize.md.
 //
 // Body measurements used: waist_girth, hip_girth (seat), inside_leg,
-// waist_height (body rise = waist_height - inside_leg).
+// waist_height (body rise = waist_height - inside_leg, bound as the derived
+// measurement body_rise, resize/pattern/measurements.h).
 #include <cmath>
 
 #include "resize/designs/designs.h"
@@ -186,13 +187,31 @@ Pattern DraftTrousers(const MeasurementSet& m) {
     p.bindings.push_back(b);
   };
   const Path S = Path::kStraight, O = Path::kOutline;
+  // Totals, then the draft's own rules that split them or derive a
+  // dimension from a measurement (each a quarter-girth or rise rule of the
+  // draft above), so the fit distributes a change as the drafting system does
+  // instead of as proportional grading or the shape objective would.
   bind("waist", "waist_girth",
        {term("front", "cf_waist", "side_waist", O, 2),
         term("back", "side_waist", "cb_waist", O, 2)});
+  bind("front_waist", "waist_girth", {term("front", "cf_waist", "side_waist", O, 4)});
   bind("seat", "hip_girth",
        {term("front", "side_seat", "cf_seat", S, 2), term("back", "cb_seat", "side_seat", S, 2)});
+  bind("front_seat", "hip_girth", {term("front", "side_seat", "cf_seat", S, 4)});
   bind("inside_leg", "inside_leg", {term("front", "hem_in", "fork", O, 1)});
   bind("side_length", "waist_height", {term("front", "side_waist", "hem_out", S, 1)});
+  // The crotch depth (0-1 = rise + 1 cm): waist line to seat line at the
+  // centre front plus seat line to crotch line at the side seam, both nearly
+  // vertical in the draft (10 and 2 mm across), so draft and binding agree
+  // within 0.2 mm for rises 40 mm shorter to 60 mm longer than the standard.
+  // Without it the fit can meet waist, seat, inside leg and side length with
+  // the crotch line too high.
+  bind("rise", "body_rise",
+       {term("front", "cf_waist", "cf_seat", S, 1), term("front", "side_seat", "side_crotch", S, 1)});
+  // The seat line a quarter of 0-1 above the crotch line, front and back
+  // (2 and 5 mm across).
+  bind("front_seat_line", "body_rise", {term("front", "side_seat", "side_crotch", S, 4)});
+  bind("back_seat_line", "body_rise", {term("back", "side_crotch", "side_seat", S, 4)});
   return p;
 }
 
