@@ -42,6 +42,16 @@ FitEvidence EvaluateFit(const ResizeOptions& options, const std::string& design,
   e.outlines_simple = r.objectives.simple;
   e.shape_deg = r.objectives.shape_deg;
   e.critical_shape_deg = r.objectives.critical_shape_deg;
+  double change = 0;
+  Eigen::Index vertices = 0;
+  for (size_t p = 0; p < base.pieces.size(); ++p) {
+    const Eigen::VectorXd a = TurningAngles(base.pieces[p].outline);
+    const Eigen::VectorXd b = TurningAngles(direct.pieces[p].outline);
+    for (Eigen::Index v = 0; v < a.size(); ++v)
+      change += std::abs(std::remainder(b[v] - a[v], 2 * M_PI)) * 180.0 / M_PI;
+    vertices += a.size();
+  }
+  e.draft_shape_deg = change / static_cast<double>(std::max<Eigen::Index>(vertices, 1));
   e.ga_to_draft = ComparePatterns(r.fitted, direct);
   e.grading_to_draft = ComparePatterns(r.seed, direct);
   for (const MeasurementBinding& b : base.bindings)

@@ -28,6 +28,7 @@ struct FitEvidence {
   double max_seam_mismatch_mm = 0;   // largest |length(a) - length(b) - ease|
   bool outlines_simple = true;       // no fitted outline self-intersects
   double shape_deg = 0;              // mean turning-angle change (deg)
+  double draft_shape_deg = 0;        // the same for the direct draft vs the base draft (deg)
   double critical_shape_deg = 0;     // at critical points (deg)
   PatternDistance ga_to_draft;       // fitted vs drafted for the body
   PatternDistance grading_to_draft;  // proportional grading vs drafted for the body

@@ -37,12 +37,14 @@ FitnessModel::FitnessModel(const Pattern& base, const BlockSet& blocks, const Me
   for (const Piece& piece : base.pieces) {
     base_turning_.push_back(TurningAngles(piece.outline));
     const Eigen::Index n = piece.outline.rows();
-    Eigen::VectorXd direction(n);
+    Eigen::VectorXd direction(n), length(n);
     for (Eigen::Index v = 0; v < n; ++v) {
       const Eigen::Vector2d e = piece.outline.row((v + 1) % n) - piece.outline.row(v);
       direction[v] = std::atan2(e.y(), e.x());
+      length[v] = std::max(e.norm(), 1e-3);  // guards the relative change below
     }
     base_direction_.push_back(direction);
+    base_length_.push_back(length);
   }
   for (const Seam& seam : base.seams) {
     SeamData d;
@@ -164,7 +166,8 @@ Objectives FitnessModel::Evaluate(const Eigen::VectorXd& genes, bool check_simpl
 }
 
 void FitnessModel::Residuals(const Eigen::VectorXd& genes, double angle_scale_mm,
-                             Eigen::VectorXd* constraints, Eigen::VectorXd* soft, int only_piece,
+                             double length_scale_mm, Eigen::VectorXd* constraints,
+                             Eigen::VectorXd* soft, int only_piece,
                              const Eigen::VectorXd* reuse_soft) const {
   thread_local std::vector<Outline> outlines;
   Outlines(genes, &outlines);
@@ -197,7 +200,8 @@ void FitnessModel::Residuals(const Eigen::VectorXd& genes, double angle_scale_mm
   }
   for (size_t p = 0; p < outlines.size(); ++p) {
     if (stale(static_cast<int>(p))) {  // unchanged piece: copy its block
-      const Eigen::Index n = outlines[p].rows(), at = static_cast<Eigen::Index>(s.size());
+      const Eigen::Index n = outlines[p].rows() * (length_scale_mm > 0 ? 2 : 1);
+      const Eigen::Index at = static_cast<Eigen::Index>(s.size());
       for (Eigen::Index v = 0; v < n; ++v) s.push_back((*reuse_soft)[at + v]);
       continue;
     }
@@ -210,6 +214,11 @@ void FitnessModel::Residuals(const Eigen::VectorXd& genes, double angle_scale_mm
       const Eigen::Vector2d e = o.row((v + 1) % n) - o.row(v);
       s.push_back(WrapAngle(std::atan2(e.y(), e.x()) - base_direction_[p][v]) * angle_scale_mm);
     }
+    if (length_scale_mm > 0)
+      for (Eigen::Index v = 0; v < n; ++v) {
+        const double l = (o.row((v + 1) % n) - o.row(v)).norm();
+        s.push_back(length_scale_mm * (l / base_length_[p][v] - 1.0));
+      }
   }
   *constraints = Eigen::Map<Eigen::VectorXd>(c.data(), static_cast<Eigen::Index>(c.size()));
   *soft = Eigen::Map<Eigen::VectorXd>(s.data(), static_cast<Eigen::Index>(s.size()));

@@ -59,8 +59,11 @@ class FitnessModel {
   // differ from these only in that piece's control points), soft entries that
   // do not depend on that piece are copied instead of recomputed (for the
   // polish's finite differences).
-  void Residuals(const Eigen::VectorXd& genes, double angle_scale_mm, Eigen::VectorXd* constraints,
-                 Eigen::VectorXd* soft, int only_piece = -1,
+  // With `length_scale_mm` > 0 the soft residuals also hold, per outline
+  // edge, its relative length change from the base pattern scaled by
+  // `length_scale_mm` (length_scale_mm x (length / base length - 1)).
+  void Residuals(const Eigen::VectorXd& genes, double angle_scale_mm, double length_scale_mm,
+                 Eigen::VectorXd* constraints, Eigen::VectorXd* soft, int only_piece = -1,
                  const Eigen::VectorXd* reuse_soft = nullptr) const;
 
   const Pattern& base() const { return base_; }
@@ -84,6 +87,7 @@ class FitnessModel {
   std::vector<SeamData> seams_;
   std::vector<Eigen::VectorXd> base_turning_;    // per piece, radians
   std::vector<Eigen::VectorXd> base_direction_;  // per piece, edge directions, radians
+  std::vector<Eigen::VectorXd> base_length_;     // per piece, edge lengths, mm (>= 1e-3)
 };
 
 }  // namespace bespoke

@@ -36,7 +36,7 @@ Eval Residuals(const FitnessModel& model, const PolishOptions& o, const Eigen::V
                const std::vector<double>& gaps0, int only_piece = -1,
                const Eigen::VectorXd* reuse_soft = nullptr) {
   Eval e;
-  model.Residuals(x, o.angle_scale_mm, &e.c, &e.s, only_piece, reuse_soft);
+  model.Residuals(x, o.angle_scale_mm, o.length_scale_mm, &e.c, &e.s, only_piece, reuse_soft);
   const std::vector<double> gaps = Gaps(model.blocks(), x);
   const Eigen::Index k = e.s.size();
   e.s.conservativeResize(k + static_cast<Eigen::Index>(gaps.size()));
@@ -65,8 +65,9 @@ double Merit(const Eval& e, const Eigen::VectorXd& x, const Eigen::VectorXd& x0,
 
 void PolishOptions::Check() const {
   if (max_iterations < 0 || !(tolerance_mm > 0) || !(angle_scale_mm > 0) || !(regularisation > 0) ||
-      !(min_gap_mm > 0))
-    throw InputError("polish options: iterations >= 0, other values > 0");
+      !(min_gap_mm > 0) || !(length_scale_mm >= 0))
+    throw InputError(
+        "polish options: iterations >= 0, length scale >= 0, other values > 0");
 }
 
 PolishReport Polish(const PolishOptions& o, const FitnessModel& model, Eigen::VectorXd* genes) {
@@ -78,7 +79,12 @@ PolishReport Polish(const PolishOptions& o, const FitnessModel& model, Eigen::Ve
   Eval current = Residuals(model, o, x, gaps0);
   report.max_constraint_before_mm = current.c.size() ? current.c.cwiseAbs().maxCoeff() : 0.0;
   report.max_constraint_after_mm = report.max_constraint_before_mm;
-  if (current.c.size() == 0) return report;
+  if (current.c.size() == 0) {
+    Eigen::VectorXd c, soft;
+    model.Residuals(x, o.angle_scale_mm, o.length_scale_mm, &c, &soft);
+    report.soft_after = soft.squaredNorm();
+    return report;
+  }
   const Eigen::Index n = x.size(), m = current.c.size(), k = current.s.size();
   std::vector<int> piece_of(n);  // which piece's block each control coordinate belongs to
   for (size_t b = 0; b < model.blocks().blocks.size(); ++b) {
@@ -134,6 +140,9 @@ PolishReport Polish(const PolishOptions& o, const FitnessModel& model, Eigen::Ve
     if (report.max_constraint_after_mm < o.tolerance_mm && last_step < 1e-3) break;
   }
   report.max_constraint_after_mm = current.c.cwiseAbs().maxCoeff();
+  Eigen::VectorXd c, soft;
+  model.Residuals(x, o.angle_scale_mm, o.length_scale_mm, &c, &soft);
+  report.soft_after = soft.squaredNorm();
   *genes = x;
   return report;
 }

@@ -242,24 +242,36 @@ ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& base,
   const auto ga_end = std::chrono::steady_clock::now();
   result.ga_time_s = std::chrono::duration<double>(ga_end - start).count();
   if (options.polish) {
-    // Deviation: the polish also starts from the proportional seed, and the
-    // result that meets the constraints with the least critical-point angle
-    // change is kept (result.polish_start says which start won).
-    Eigen::VectorXd from_seed = seed;
-    const PolishReport ga_report = Polish(options.polish_options, model, &genes);
-    const PolishReport seed_report = Polish(options.polish_options, model, &from_seed);
-    const Objectives a = model.Evaluate(genes, true), b = model.Evaluate(from_seed, true);
-    auto score = [&](const Objectives& o, const PolishReport& r) {
-      const bool ok = o.simple && r.max_constraint_after_mm <= options.tolerance_mm;
-      return std::make_pair(ok ? 0 : 1, ok ? o.critical_shape_deg : r.max_constraint_after_mm);
+    // Deviation: the polish also starts from the proportional seed and from
+    // the base pattern itself; of the results that meet the constraints the
+    // one with the least polish objective (PolishReport::soft_after: shape,
+    // paired seams, relative edge lengths) is kept, else the least violation
+    // (result.polish_start says which start won).
+    struct Start {
+      const char* name;
+      Eigen::VectorXd genes;
+      PolishReport report;
+      Objectives objectives;
     };
-    result.polish = ga_report;
-    result.polish_start = "ga";
-    if (score(b, seed_report) < score(a, ga_report)) {
-      genes = from_seed;
-      result.polish = seed_report;
-      result.polish_start = "seed";
+    std::vector<Start> starts = {
+        {"ga", genes, {}, {}},
+        {"seed", seed, {}, {}},
+        {"base", SeedGenes(base, blocks, std::vector<double>(base.pieces.size(), 1.0)), {}, {}}};
+    for (Start& s : starts) {
+      s.report = Polish(options.polish_options, model, &s.genes);
+      s.objectives = model.Evaluate(s.genes, true);
     }
+    auto score = [&](const Start& s) {
+      const bool ok = s.objectives.simple && s.report.max_constraint_after_mm <= options.tolerance_mm;
+      return std::make_pair(ok ? 0 : 1,
+                            ok ? s.report.soft_after : s.report.max_constraint_after_mm);
+    };
+    size_t best = 0;
+    for (size_t i = 1; i < starts.size(); ++i)
+      if (score(starts[i]) < score(starts[best])) best = i;
+    genes = starts[best].genes;
+    result.polish = starts[best].report;
+    result.polish_start = starts[best].name;
   }
   result.polish_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - ga_end).count();

@@ -4,6 +4,7 @@
 
 #include "resize/designs/body_variants.h"
 #include "resize/designs/designs.h"
+#include "resize/ga/evidence.h"
 #include "resize/ga/grading.h"
 #include "resize/pattern/geometry.h"
 #include "scanners/core/errors.h"
@@ -44,6 +45,61 @@ TEST(Resize, FarBodyMeetsMeasurementsAndSeams) {
   for (size_t s = 0; s < r.seam_mismatch_mm.size(); ++s)
     EXPECT_LT(std::abs(r.seam_mismatch_mm[s]), 1.0) << pattern.seams[s].name;
   EXPECT_TRUE(r.objectives.simple);
+}
+
+TEST(Resize, TrousersFollowALongerRise) {
+  // Same legs and girths, a 50 mm longer rise: only the rise bindings see
+  // it. They are met, and the fit is closer to the trousers drafted for that
+  // body than proportional grading (which scales the whole front and back by
+  // the rise's ratio) and than the unchanged standard pattern (8.1, 45 and
+  // 11.6 mm mean when written: the seat line tilts, so the side seam takes
+  // only part of the drop, docs/resize.md).
+  MeasurementSet body = BaseMeasurements("trousers");
+  body.erase("body_rise");  // derived by ResizePattern and EvaluateFit
+  body["waist_height"] += 50;
+  FitPatterns patterns;
+  const FitEvidence e = EvaluateFit(Small(), "trousers", body, &patterns);
+  EXPECT_LE(e.max_binding_error_mm, 1.0);
+  EXPECT_LE(e.max_seam_mismatch_mm, 1.0);
+  const Pattern base = DraftDesign("trousers", BaseMeasurements("trousers"));
+  const double unchanged = ComparePatterns(base, patterns.direct).mean_mm;
+  EXPECT_GT(unchanged, 10.0);  // the longer rise really changes the draft
+  EXPECT_LT(e.ga_to_draft.mean_mm, unchanged);
+  EXPECT_LT(e.ga_to_draft.mean_mm, 0.5 * e.grading_to_draft.mean_mm);
+  for (const MeasurementBinding& b : base.bindings)
+    if (b.measurement == "body_rise")
+      EXPECT_NEAR(BindingValue(patterns.fitted, b), 300 + b.ease_mm, 1.0) << b.id;
+}
+
+TEST(Resize, PolishKeepsUnboundStyleDimensions) {
+  // The trousers' hem widths are fixed style widths of the draft (210 and
+  // 250 mm for any body) that no binding names; grading scales them, the
+  // polish's relative edge-length term keeps them nearer the base's (26-28
+  // mm off against grading's 88-105 mm when written).
+  const MeasurementSet body = VariedMeasurements("trousers", 100);
+  FitPatterns patterns;
+  EvaluateFit(Small(), "trousers", body, &patterns);
+  auto hem = [](const Pattern& p, const char* piece) {
+    const Piece& q = p.pieces[p.FindPiece(piece)];
+    return (q.LandmarkPosition(q.FindLandmark("hem_in")) -
+            q.LandmarkPosition(q.FindLandmark("hem_out")))
+        .norm();
+  };
+  for (const char* piece : {"front", "back"}) {
+    const double drafted = hem(patterns.direct, piece);
+    EXPECT_GT(std::abs(hem(patterns.grading, piece) - drafted), 20.0) << piece;
+    EXPECT_LT(std::abs(hem(patterns.fitted, piece) - drafted),
+              0.5 * std::abs(hem(patterns.grading, piece) - drafted))
+        << piece;
+  }
+}
+
+TEST(Resize, PolishOptionsRejectANegativeLengthScale) {
+  PolishOptions o;
+  o.length_scale_mm = -1;
+  EXPECT_THROW(o.Check(), InputError);
+  o.length_scale_mm = 0;  // off
+  EXPECT_NO_THROW(o.Check());
 }
 
 TEST(Resize, DeterministicForASeed) {

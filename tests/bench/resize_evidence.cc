@@ -7,11 +7,14 @@
 //
 //   resize_evidence [--design shirt|trousers|both] [--bodies 20] [--population 400]
 //                   [--generations 200] [--truth-dir DIR] [--write DIR]
+//                   [--first 100] [--length-scale 30]
 // With --truth-dir, the bodies are DIR/subject_*/truth.json (from
 // `bespoke synth-set`, measurements in the contracts.md schema); without it,
 // generated measurement sets (resize/designs/body_variants.h). With --write,
 // DIR/<design>-<body>/ gets measurements.json and the fitted, drafted and
 // graded patterns (fitted.json, draft.json, grading.json) for inspection.
+// --first: the first generated body's seed (gen-<first>...); --length-scale:
+// the polish's PolishOptions::length_scale_mm (0 = the polish without it).
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -30,12 +33,13 @@
 int main(int argc, char** argv) {
   using namespace bespoke;
   ResizeOptions options;
-  int count = 20;
+  int count = 20, first = 100;
   std::string which = "both";
   std::filesystem::path truth_dir, write_dir;
   const char* usage =
       "usage: resize_evidence [--design shirt|trousers|both] [--bodies 20] [--population 400]\n"
-      "                       [--generations 200] [--truth-dir DIR] [--write DIR]\n";
+      "                       [--generations 200] [--truth-dir DIR] [--write DIR]\n"
+      "                       [--first 100] [--length-scale 30]\n";
   for (int i = 1; i < argc; i += 2) {
     const bool has_value = i + 1 < argc;
     if (!std::strcmp(argv[i], "--population") && has_value)
@@ -48,6 +52,10 @@ int main(int argc, char** argv) {
       which = argv[i + 1];
     else if (!std::strcmp(argv[i], "--truth-dir") && has_value)
       truth_dir = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--length-scale") && has_value)
+      options.polish_options.length_scale_mm = std::atof(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--first") && has_value)
+      first = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--write") && has_value)
       write_dir = argv[i + 1];
     else {
@@ -66,7 +74,7 @@ int main(int argc, char** argv) {
   }
   int failures = 0, rows = 0;
   std::printf(
-      "| design | body | worst binding mm | worst seam mm | simple | shape deg | "
+      "| design | body | worst binding mm | worst seam mm | simple | shape deg (draft's) | "
       "GA-draft mean/max mm | grading-draft mean/max mm | grading worst binding mm | polish from | "
       "s |\n"
       "|---|---|---|---|---|---|---|---|---|---|---|\n");
@@ -76,8 +84,8 @@ int main(int argc, char** argv) {
       MeasurementSet body;
       std::string name;
       if (truths.empty()) {
-        body = VariedMeasurements(design, 100 + b);
-        name = "gen-" + std::to_string(100 + b);
+        body = VariedMeasurements(design, first + b);
+        name = "gen-" + std::to_string(first + b);
       } else {
         const MeasurementSet all = ReadMeasurements(truths[b]);
         for (const auto& [m, v] : BaseMeasurements(design)) {
@@ -101,10 +109,10 @@ int main(int argc, char** argv) {
       failures += ok ? 0 : 1;
       ++rows;
       std::printf(
-          "| %s | %s | %.3f | %.3f | %s | %.3f | %.1f / %.1f | %.1f / %.1f | %.1f | %s | %.2f "
+          "| %s | %s | %.3f | %.3f | %s | %.3f (%.3f) | %.1f / %.1f | %.1f / %.1f | %.1f | %s | %.2f "
           "|%s\n",
           design.c_str(), name.c_str(), e.max_binding_error_mm, e.max_seam_mismatch_mm,
-          e.outlines_simple ? "yes" : "NO", e.shape_deg, e.ga_to_draft.mean_mm,
+          e.outlines_simple ? "yes" : "NO", e.shape_deg, e.draft_shape_deg, e.ga_to_draft.mean_mm,
           e.ga_to_draft.max_mm, e.grading_to_draft.mean_mm, e.grading_to_draft.max_mm,
           e.grading_max_binding_error_mm, e.polish_start.c_str(), e.time_s, ok ? "" : " **miss**");
       std::fflush(stdout);
