@@ -75,6 +75,11 @@ PieceBuilder DraftFront(const TrouserLines& t) {
   f.AddCurve(SmoothCurve({fork, Bisector(corner, fork, cf_seat, 25), cf_seat}, kCrotchSamples));
   f.Add(cf_seat, "cf_seat", "", true);
   f.Add(cf_waist, "cf_waist", "front_waist_point", true);
+  // Construction point 0 of the draft: the side construction line (x = 0,
+  // through the seat and crotch lines) meets the waist line. Not on the
+  // outline (the waist is shaped in from it); bindings measure the crotch
+  // depth from it, parallel to the grain as the draft sets it out.
+  f.AddInside("side_line_waist", V(0, 0));
   f.Notch(f.Index("side_seat"));
   f.Notch(f.Index("knee_in"));
   f.Grain(V(crease, t.y_seat - 20), V(crease, t.y_hem + 80));
@@ -113,6 +118,7 @@ PieceBuilder DraftBack(const TrouserLines& t) {
        side_waist},
       kHipSamples));
   b.Add(side_waist, "side_waist", "waist_side", true);
+  b.AddInside("side_line_waist", V(seat_x, 0));  // as on the front
   b.Notch(b.Index("side_seat"));
   b.Notch(b.Index("knee_in"));
   b.Grain(V(crease, t.y_seat - 20), V(crease, t.y_hem + 80));
@@ -200,14 +206,18 @@ Pattern DraftTrousers(const MeasurementSet& m) {
   bind("front_seat", "hip_girth", {term("front", "side_seat", "cf_seat", S, 4)});
   bind("inside_leg", "inside_leg", {term("front", "hem_in", "fork", O, 1)});
   bind("side_length", "waist_height", {term("front", "side_waist", "hem_out", S, 1)});
-  // The crotch depth (0-1 = rise + 1 cm): waist line to seat line at the
-  // centre front plus seat line to crotch line at the side seam, both nearly
-  // vertical in the draft (10 and 2 mm across), so draft and binding agree
-  // within 0.2 mm for rises 40 mm shorter to 60 mm longer than the standard.
-  // Without it the fit can meet waist, seat, inside leg and side length with
-  // the crotch line too high.
-  bind("rise", "body_rise",
-       {term("front", "cf_waist", "cf_seat", S, 1), term("front", "side_seat", "side_crotch", S, 1)});
+  // The crotch depth (0-1 = rise + 1 cm) on the side construction line of
+  // the front and of the back (2 and 5 mm off the vertical), and at the
+  // centre front (waist to seat line plus seat to crotch line, 10 and 2 mm
+  // off): draft and bindings agree within 0.2 mm for rises 40 mm shorter to
+  // 60 mm longer than the standard. Without them the fit can meet waist,
+  // seat, inside leg and side length with the crotch line too high, or tilt
+  // the seat line so that only the centre front follows the rise.
+  bind("rise", "body_rise", {term("front", "side_line_waist", "side_crotch", S, 1)});
+  bind("back_rise", "body_rise", {term("back", "side_line_waist", "side_crotch", S, 1)});
+  bind("rise_cf", "body_rise",
+       {term("front", "cf_waist", "cf_seat", S, 1),
+        term("front", "side_seat", "side_crotch", S, 1)});
   // The seat line a quarter of 0-1 above the crotch line, front and back
   // (2 and 5 mm across).
   bind("front_seat_line", "body_rise", {term("front", "side_seat", "side_crotch", S, 4)});

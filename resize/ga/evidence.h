@@ -34,7 +34,7 @@ struct FitEvidence {
   PatternDistance grading_to_draft;  // proportional grading vs drafted for the body
   double grading_max_binding_error_mm = 0;
   double time_s = 0;         // GA + polish
-  std::string polish_start;  // "ga" or "seed" (ResizeResult::polish_start)
+  std::string polish_start;  // "ga", "seed" or "base" (ResizeResult::polish_start)
 };
 
 // The three patterns EvaluateFit compares (for inspecting a result).

@@ -60,7 +60,7 @@ struct ResizeResult {
   Objectives ga_objectives;  // the GA's pick, before the polish
   Objectives objectives;     // the final answer
   PolishReport polish;
-  std::string polish_start = "none";  // which start the kept polish came from: "ga" or "seed"
+  std::string polish_start = "none";  // which start the kept polish came from: "ga", "seed", "base"
   std::vector<Objectives> front;      // final first front
   std::vector<GenerationStats> history;
   Pattern seed;  // proportional scaling (Algorithm 6)
