@@ -29,6 +29,23 @@ int LateralPieceNear(const Context& c, const Slice& s, int sign, const Eigen::Ve
   return best;
 }
 
+// The lateral piece of slice `s` with the most points among those whose
+// centroid lies within `radius` of `centre` (xy); -1 when none. At the
+// armpit the arm's section is the big piece beside the trunk; the nearest
+// piece can be a fragment of the armpit fold (a sparse scan's thin slice).
+int LargestLateralPieceNear(const Context& c, const Slice& s, int sign, const Eigen::Vector2d& centre,
+                            double radius) {
+  const std::vector<int> trunk = c.TrunkPieces(s);
+  int best = -1;
+  for (size_t i = 0; i < s.pieces.size(); ++i) {
+    if (std::find(trunk.begin(), trunk.end(), static_cast<int>(i)) != trunk.end()) continue;
+    const Piece& p = s.pieces[i];
+    if (sign * p.centroid.x() <= 0 || p.rows.size() < 4 || (p.centroid - centre).norm() >= radius) continue;
+    if (best < 0 || p.rows.size() > s.pieces[static_cast<size_t>(best)].rows.size()) best = static_cast<int>(i);
+  }
+  return best;
+}
+
 // Lateral extent of the trunk's section on one side (x' = sign * x).
 double Extent(const Context& c, const Slice& s, int sign) {
   double ext = -kInf;
@@ -70,6 +87,17 @@ void CollectTPoseArm(const Context& c, double side_x, double armpit_z, int sign,
     for (int r : band) sum += c.P(r);
     arm->centre_line.push_back(sum / static_cast<double>(band.size()));
   }
+}
+
+// How far (mm) the scan reaches beyond the trunk's side `side_x` (x' =
+// sign * x) at or above `z` - 40 mm: a T-pose arm's length, a few cm of
+// shoulder for an A-pose arm.
+double TPoseReach(const Context& c, double side_x, double z, int sign) {
+  double reach = 0;
+  for (Eigen::Index r = 0; r < c.points.rows(); ++r) {
+    if (c.points(r, 2) >= z - 40) reach = std::max(reach, sign * c.points(r, 0) - side_x);
+  }
+  return reach;
 }
 
 void FindArmpit(Context* c, int sign) {
@@ -118,13 +146,23 @@ void FindArmpit(Context* c, int sign) {
   const Slice& below = c->slices[static_cast<size_t>(k)];
   const std::vector<int> trunk = c->TrunkRows(below);
   const Eigen::Vector2d trunk_side(sign * ext[static_cast<size_t>(k)], 0);
-  int piece = LateralPieceNear(*c, below, sign, trunk_side, 250);
+  int piece = LargestLateralPieceNear(*c, below, sign, trunk_side, 250);
   // An A-pose arm leaves the trunk right beside it; a piece far out is a
   // T-pose forearm or hand hanging below the arm's line.
   if (piece >= 0) {
     const Piece& p = below.pieces[static_cast<size_t>(piece)];
     const double inner = sign > 0 ? p.lo.x() : -p.hi.x();
-    if (inner < ext[static_cast<size_t>(k)] - 40 || inner > ext[static_cast<size_t>(k)] + 100) piece = -1;
+    if (inner > ext[static_cast<size_t>(k)] + 100) {
+      piece = -1;
+    } else if (inner < ext[static_cast<size_t>(k)] - 40 &&
+               TPoseReach(*c, ext[static_cast<size_t>(k)], below.z, sign) > 0.15 * h) {
+      // A piece reaching inside the trunk's side is no A-pose arm when a
+      // T-pose arm stretches out above. On a sparse scan (under ~60k
+      // cleaned points) the trunk's back can break up in a thin slice and
+      // its side fragment join the arm's piece; then nothing reaches out
+      // above the armpit and the piece is the A-pose arm after all.
+      piece = -1;
+    }
   }
   arm.found = true;
   if (piece >= 0) {
