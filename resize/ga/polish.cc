@@ -66,8 +66,7 @@ double Merit(const Eval& e, const Eigen::VectorXd& x, const Eigen::VectorXd& x0,
 void PolishOptions::Check() const {
   if (max_iterations < 0 || !(tolerance_mm > 0) || !(angle_scale_mm > 0) || !(regularisation > 0) ||
       !(min_gap_mm > 0) || !(length_scale_mm >= 0))
-    throw InputError(
-        "polish options: iterations >= 0, length scale >= 0, other values > 0");
+    throw InputError("polish options: iterations >= 0, length scale >= 0, other values > 0");
 }
 
 PolishReport Polish(const PolishOptions& o, const FitnessModel& model, Eigen::VectorXd* genes) {
@@ -89,7 +88,8 @@ PolishReport Polish(const PolishOptions& o, const FitnessModel& model, Eigen::Ve
   std::vector<int> piece_of(n);  // which piece's block each control coordinate belongs to
   for (size_t b = 0; b < model.blocks().blocks.size(); ++b) {
     const Block& block = model.blocks().blocks[b];
-    for (int g = 0; g < 2 * block.nu * block.nv; ++g) piece_of[block.offset + g] = static_cast<int>(b);
+    for (int g = 0; g < 2 * block.nu * block.nv; ++g)
+      piece_of[block.offset + g] = static_cast<int>(b);
   }
   double last_step = 0;
   for (int it = 0; it < o.max_iterations; ++it) {

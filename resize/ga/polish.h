@@ -30,8 +30,8 @@ struct PolishOptions {
   // drafting system's fixed hem widths, band depths, overlaps, ...) and lets
   // long edges rather than short ones absorb a change. 0 = off. Default 30.
   double length_scale_mm = 30;
-  double min_gap_mm = 0.1;       // grid ordering gap. Default 0.1 mm.
-  void Check() const;            // InputError for non-positive values
+  double min_gap_mm = 0.1;  // grid ordering gap. Default 0.1 mm.
+  void Check() const;       // InputError for non-positive values (length_scale_mm may be 0)
 };
 
 struct PolishReport {

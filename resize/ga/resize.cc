@@ -262,7 +262,8 @@ ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& base,
       s.objectives = model.Evaluate(s.genes, true);
     }
     auto score = [&](const Start& s) {
-      const bool ok = s.objectives.simple && s.report.max_constraint_after_mm <= options.tolerance_mm;
+      const bool ok =
+          s.objectives.simple && s.report.max_constraint_after_mm <= options.tolerance_mm;
       return std::make_pair(ok ? 0 : 1,
                             ok ? s.report.soft_after : s.report.max_constraint_after_mm);
     };

@@ -27,8 +27,8 @@
 #include "resize/designs/designs.h"
 #include "resize/ga/evidence.h"
 #include "resize/io/pattern_json.h"
-#include "scanners/core/json_io.h"
 #include "scanners/core/errors.h"
+#include "scanners/core/json_io.h"
 
 int main(int argc, char** argv) {
   using namespace bespoke;
@@ -109,7 +109,8 @@ int main(int argc, char** argv) {
       failures += ok ? 0 : 1;
       ++rows;
       std::printf(
-          "| %s | %s | %.3f | %.3f | %s | %.3f (%.3f) | %.1f / %.1f | %.1f / %.1f | %.1f | %s | %.2f "
+          "| %s | %s | %.3f | %.3f | %s | %.3f (%.3f) | %.1f / %.1f | %.1f / %.1f | %.1f | %s | "
+          "%.2f "
           "|%s\n",
           design.c_str(), name.c_str(), e.max_binding_error_mm, e.max_seam_mismatch_mm,
           e.outlines_simple ? "yes" : "NO", e.shape_deg, e.draft_shape_deg, e.ga_to_draft.mean_mm,
