@@ -3,7 +3,10 @@
 // and crowding distance), followed by a constrained polish (polish.h).
 //
 // Input: a base pattern (validated, with bindings) and the body's
-// measurements (mm, core names; every bound measurement must be present).
+// measurements (mm, core names; every bound measurement must be present after
+// the derived ones are added, AddDerivedMeasurements). The polish starts from
+// the GA's pick, the proportional seed and the base pattern and keeps the
+// result with the least polish objective (polish_start says which).
 // Output: the fitted pattern, its objective values before and after the
 // polish, the final Pareto front, per-generation statistics, and the
 // proportional-grading seed for comparison.
