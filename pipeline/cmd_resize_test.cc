@@ -63,6 +63,60 @@ TEST(ResizeCli, DraftThenFitAShirtToALargerBody) {
   EXPECT_THAT(ReadText(dir / "fit" / "fitted.dxf"), HasSubstr("EOF"));
 }
 
+// A Valentina DXF-ASTM piece (../shared) has no landmarks or bindings: the
+// sidecar of docs/pattern-format.md adds two landmarks (snapped to outline
+// vertices 385 mm apart) and an outseam binding with -20 mm ease. A body
+// with a 500 mm outseam stretches the piece to 480 mm, and the fitted DXF
+// read back with the same sidecar measures 480 mm.
+TEST(ResizeCli, FitsAValentinaDxfPieceWithASidecar) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  TempDir dir;
+  const auto dxf = shared / "data/patterns/valentina/smart_pattern_145_ASTM_R12.dxf";
+  std::ofstream(dir / "side.json") << R"({"pieces": [{"name": "Kurze Hinterhose",
+      "critical": [0, 14, 15, 16],
+      "landmarks": [{"name": "waist_cb", "near": [0.3, 419.2]}, {"name": "hem_cb", "near": [0.3, 0.3]}]}],
+      "bindings": [{"id": "length", "measurement": "outseam", "ease_mm": -20,
+                    "terms": [{"piece": "Kurze Hinterhose", "from": "waist_cb", "to": "hem_cb"}]}]})";
+  std::ofstream(dir / "body.json") << R"({"measurements": [{"name": "outseam", "value_mm": 500}]})";
+  const std::string common = " --sidecar " + Quote(dir / "side.json") + " --measurements " +
+                             Quote(dir / "body.json") + " --population 40 --generations 30 -o ";
+  const auto fit = Bespoke("resize --pattern " + Quote(dxf) + common + Quote(dir / "fit"), dir);
+  ASSERT_EQ(fit.exit_code, 0) << fit.err;
+  const nlohmann::json report = nlohmann::json::parse(ReadText(dir / "fit" / "report.json"));
+  ASSERT_EQ(report.at("measurements").size(), 1u);
+  const nlohmann::json& m = report.at("measurements")[0];
+  EXPECT_NEAR(m.at("base_pattern_mm").get<double>(), 385.0, 1.0);  // the sample as drawn
+  EXPECT_NEAR(m.at("target_mm").get<double>(), 480.0, 1e-9);
+  EXPECT_NEAR(m.at("achieved_mm").get<double>(), 480.0, 1.0);
+  EXPECT_THAT(ReadText(dir / "fit" / "fitted.dxf"), HasSubstr("Kurze Hinterhose"));
+  // The written DXF is read again, the landmarks put on the vertices the fit
+  // gave them (fitted.json): it already has the length.
+  const nlohmann::json fitted = nlohmann::json::parse(ReadText(dir / "fit" / "fitted.json"));
+  nlohmann::json side2 = nlohmann::json::parse(ReadText(dir / "side.json"));
+  for (nlohmann::json& l : side2["pieces"][0]["landmarks"]) {
+    l.erase("near");
+    for (const nlohmann::json& f : fitted.at("pieces")[0].at("landmarks"))
+      if (f.at("name") == l.at("name")) l["vertex"] = f.at("vertex");
+  }
+  std::ofstream(dir / "side2.json") << side2.dump();
+  const auto again = Bespoke("resize --pattern " + Quote(dir / "fit" / "fitted.dxf") + " --sidecar " +
+                                 Quote(dir / "side2.json") + " --measurements " + Quote(dir / "body.json") +
+                                 " --population 40 --generations 30 -o " + Quote(dir / "again"),
+                             dir);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  const nlohmann::json report2 = nlohmann::json::parse(ReadText(dir / "again" / "report.json"));
+  EXPECT_NEAR(report2.at("measurements")[0].at("base_pattern_mm").get<double>(), 480.0, 1.0);
+  // A sidecar naming a piece the file does not have: exit 1, the names listed.
+  std::ofstream(dir / "wrong.json") << R"({"pieces": [{"name": "Sleeve"}]})";
+  const auto wrong = Bespoke("resize --pattern " + Quote(dxf) + " --sidecar " + Quote(dir / "wrong.json") +
+                                 " --measurements " + Quote(dir / "body.json") + " -o " + Quote(dir / "w"),
+                             dir);
+  EXPECT_EQ(wrong.exit_code, 1);
+  EXPECT_THAT(wrong.err, HasSubstr("'Sleeve'"));
+  EXPECT_THAT(wrong.err, HasSubstr("'Kurze Hinterhose'"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "w"));
+}
+
 TEST(ResizeCli, BadInputExitsOneNamingTheProblemAndWritesNothing) {
   TempDir dir;
   std::ofstream(dir / "empty.json") << R"({"format": "bespoke-measurements", "version": 1, "units": "mm",

@@ -239,7 +239,12 @@ void ApplySidecar(const json& sidecar, const std::string& what, Pattern* pattern
   for (const json& pj : sidecar.value("pieces", json::array())) {
     const std::string name = Require<std::string>(pj, "name", what + ": piece");
     const int p = pattern->FindPiece(name);
-    if (p < 0) throw InputError(what + ": sidecar names unknown piece '" + name + "'");
+    if (p < 0) {
+      std::string known;
+      for (const Piece& piece : pattern->pieces) known += (known.empty() ? "'" : ", '") + piece.name + "'";
+      throw InputError(what + ": sidecar names unknown piece '" + name + "' (the pattern's pieces: " +
+                       known + ")");
+    }
     ParsePieceExtras(pj, what + ": piece '" + name + "'", &pattern->pieces[p]);
   }
   ParseSeamsAndBindings(sidecar, what, pattern);
