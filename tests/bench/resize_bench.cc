@@ -19,6 +19,7 @@
 #include "resize/designs/body_variants.h"
 #include "resize/designs/designs.h"
 #include "resize/ga/resize.h"
+#include "scanners/core/errors.h"
 
 namespace {
 
@@ -40,7 +41,8 @@ Run Time(const bespoke::ResizeOptions& o, const bespoke::Pattern& p,
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+int Main(int argc, char** argv) {
   bespoke::ResizeOptions options;
   int bodies = 4;
   for (int i = 1; i + 1 < argc; i += 2) {
@@ -84,4 +86,19 @@ int main(int argc, char** argv) {
     }
   }
   return 0;
+}
+}  // namespace
+
+// Errors end the run with a message and an exit code, never an abort:
+// 1 for bad input (options, measurement files), 2 for anything else.
+int main(int argc, char** argv) {
+  try {
+    return Main(argc, argv);
+  } catch (const bespoke::InputError& e) {
+    std::fprintf(stderr, "%s: %s\n", "resize_bench", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: internal error: %s\n", "resize_bench", e.what());
+    return 2;
+  }
 }

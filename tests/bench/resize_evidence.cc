@@ -30,7 +30,8 @@
 #include "scanners/core/errors.h"
 #include "scanners/core/json_io.h"
 
-int main(int argc, char** argv) {
+namespace {
+int Run(int argc, char** argv) {
   using namespace bespoke;
   ResizeOptions options;
   int count = 20, first = 100;
@@ -65,6 +66,8 @@ int main(int argc, char** argv) {
   }
   std::vector<std::filesystem::path> truths;
   if (!truth_dir.empty()) {
+    if (!std::filesystem::is_directory(truth_dir))
+      throw InputError(truth_dir.string() + ": --truth-dir is not a folder (a `bespoke synth-set` output)");
     for (const auto& entry : std::filesystem::directory_iterator(truth_dir))
       if (std::filesystem::exists(entry.path() / "truth.json"))
         truths.push_back(entry.path() / "truth.json");
@@ -121,4 +124,19 @@ int main(int argc, char** argv) {
   }
   std::printf("\n%d passed, %d failed\n", rows - failures, failures);
   return failures == 0 ? 0 : 1;
+}
+}  // namespace
+
+// Errors end the run with a message and an exit code, never an abort:
+// 1 for bad input (options, measurement files), 2 for anything else.
+int main(int argc, char** argv) {
+  try {
+    return Run(argc, argv);
+  } catch (const bespoke::InputError& e) {
+    std::fprintf(stderr, "%s: %s\n", "resize_evidence", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: internal error: %s\n", "resize_evidence", e.what());
+    return 2;
+  }
 }
