@@ -13,36 +13,40 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The lateral piece of slice `s` (not trunk, on the side) nearest `centre`
-// (xy) within `radius`; -1 when none.
-int LateralPieceNear(const Context& c, const Slice& s, int sign, const Eigen::Vector2d& centre, double radius) {
+// The lateral pieces of slice `s` (not trunk, on the `sign` side, at least
+// 4 points) whose centroid lies within `radius` of `centre` (xy).
+std::vector<int> LateralPiecesNear(const Context& c, const Slice& s, int sign, const Eigen::Vector2d& centre,
+                                   double radius) {
   const std::vector<int> trunk = c.TrunkPieces(s);
-  int best = -1;
-  double best_d = radius;
+  std::vector<int> out;
   for (size_t i = 0; i < s.pieces.size(); ++i) {
     if (std::find(trunk.begin(), trunk.end(), static_cast<int>(i)) != trunk.end()) continue;
     const Piece& p = s.pieces[i];
-    if (sign * p.centroid.x() <= 0 || p.rows.size() < 4) continue;
-    const double d = (p.centroid - centre).norm();
-    if (d < best_d) best_d = d, best = static_cast<int>(i);
+    if (sign * p.centroid.x() > 0 && p.rows.size() >= 4 && (p.centroid - centre).norm() < radius)
+      out.push_back(static_cast<int>(i));
   }
+  return out;
+}
+
+// Of those, the one nearest `centre`; -1 when none.
+int LateralPieceNear(const Context& c, const Slice& s, int sign, const Eigen::Vector2d& centre, double radius) {
+  int best = -1;
+  for (int i : LateralPiecesNear(c, s, sign, centre, radius))
+    if (best < 0 || (s.pieces[static_cast<size_t>(i)].centroid - centre).norm() <
+                        (s.pieces[static_cast<size_t>(best)].centroid - centre).norm())
+      best = i;
   return best;
 }
 
-// The lateral piece of slice `s` with the most points among those whose
-// centroid lies within `radius` of `centre` (xy); -1 when none. At the
-// armpit the arm's section is the big piece beside the trunk; the nearest
-// piece can be a fragment of the armpit fold (a sparse scan's thin slice).
+// Of those, the one with the most points; -1 when none. At the armpit the
+// arm's section is the big piece beside the trunk; the nearest piece can be
+// a fragment of the armpit fold (a sparse scan's thin slice).
 int LargestLateralPieceNear(const Context& c, const Slice& s, int sign, const Eigen::Vector2d& centre,
                             double radius) {
-  const std::vector<int> trunk = c.TrunkPieces(s);
   int best = -1;
-  for (size_t i = 0; i < s.pieces.size(); ++i) {
-    if (std::find(trunk.begin(), trunk.end(), static_cast<int>(i)) != trunk.end()) continue;
-    const Piece& p = s.pieces[i];
-    if (sign * p.centroid.x() <= 0 || p.rows.size() < 4 || (p.centroid - centre).norm() >= radius) continue;
-    if (best < 0 || p.rows.size() > s.pieces[static_cast<size_t>(best)].rows.size()) best = static_cast<int>(i);
-  }
+  for (int i : LateralPiecesNear(c, s, sign, centre, radius))
+    if (best < 0 || s.pieces[static_cast<size_t>(i)].rows.size() > s.pieces[static_cast<size_t>(best)].rows.size())
+      best = i;
   return best;
 }
 

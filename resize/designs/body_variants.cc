@@ -14,14 +14,13 @@ MeasurementSet VariedMeasurements(const std::string& design, std::uint64_t seed)
   while (g > 0.92 && g < 1.08) g = girth(rng);
   const double l = length(rng);
   MeasurementSet m = BaseMeasurements(design);
+  for (auto it = m.begin(); it != m.end();)  // derived ones are recomputed below, not drawn
+    it = IsDerivedMeasurement(it->first) ? m.erase(it) : std::next(it);
   for (auto& [name, value] : m) {
-    if (IsDerivedMeasurement(name)) continue;  // recomputed below, not drawn
     const bool is_girth = name.find("_girth") != std::string::npos || name == "back_width" ||
                           name == "armhole_length";
     value *= (is_girth ? g : l) * jitter(rng);
   }
-  for (auto it = m.begin(); it != m.end();)
-    it = IsDerivedMeasurement(it->first) ? m.erase(it) : std::next(it);
   AddDerivedMeasurements(&m, "varied measurements for " + design);
   return m;
 }

@@ -16,12 +16,11 @@ MeasurementSet BaseMeasurements(const std::string& design) {
     return {{"chest_girth", 1000}, {"neck_girth", 400},     {"back_length", 450},
             {"back_width", 390},   {"armhole_length", 460}, {"waist_to_hip", 200},
             {"arm_length", 640},   {"wrist_girth", 175}};
-  if (design == "trousers")
-    return {{"waist_girth", 840},
-            {"hip_girth", 1000},
-            {"inside_leg", 810},
-            {"waist_height", 1060},
-            {"body_rise", 250}};  // derived: waist_height - inside_leg
+  if (design == "trousers") {
+    MeasurementSet m = {{"waist_girth", 840}, {"hip_girth", 1000}, {"inside_leg", 810}, {"waist_height", 1060}};
+    AddDerivedMeasurements(&m, "design trousers");  // body_rise
+    return m;
+  }
   throw InputError("unknown design '" + design + "' (known: shirt, trousers)");
 }
 

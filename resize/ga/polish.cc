@@ -32,6 +32,13 @@ std::vector<double> Gaps(const BlockSet& blocks, const Eigen::VectorXd& x) {
   return gaps;
 }
 
+// |soft residuals|^2 at `x` (PolishReport::soft_after).
+double SoftObjective(const FitnessModel& model, const PolishOptions& o, const Eigen::VectorXd& x) {
+  Eigen::VectorXd c, soft;
+  model.Residuals(x, o.angle_scale_mm, o.length_scale_mm, &c, &soft);
+  return soft.squaredNorm();
+}
+
 Eval Residuals(const FitnessModel& model, const PolishOptions& o, const Eigen::VectorXd& x,
                const std::vector<double>& gaps0, int only_piece = -1,
                const Eigen::VectorXd* reuse_soft = nullptr) {
@@ -79,9 +86,7 @@ PolishReport Polish(const PolishOptions& o, const FitnessModel& model, Eigen::Ve
   report.max_constraint_before_mm = current.c.size() ? current.c.cwiseAbs().maxCoeff() : 0.0;
   report.max_constraint_after_mm = report.max_constraint_before_mm;
   if (current.c.size() == 0) {
-    Eigen::VectorXd c, soft;
-    model.Residuals(x, o.angle_scale_mm, o.length_scale_mm, &c, &soft);
-    report.soft_after = soft.squaredNorm();
+    report.soft_after = SoftObjective(model, o, x);
     return report;
   }
   const Eigen::Index n = x.size(), m = current.c.size(), k = current.s.size();
@@ -140,9 +145,7 @@ PolishReport Polish(const PolishOptions& o, const FitnessModel& model, Eigen::Ve
     if (report.max_constraint_after_mm < o.tolerance_mm && last_step < 1e-3) break;
   }
   report.max_constraint_after_mm = current.c.cwiseAbs().maxCoeff();
-  Eigen::VectorXd c, soft;
-  model.Residuals(x, o.angle_scale_mm, o.length_scale_mm, &c, &soft);
-  report.soft_after = soft.squaredNorm();
+  report.soft_after = SoftObjective(model, o, x);
   *genes = x;
   return report;
 }
