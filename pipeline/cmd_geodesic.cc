@@ -38,9 +38,10 @@ struct GeodesicCommandOptions {
   std::filesystem::path report;     // optional JSON with results and settings
   std::string units;                // the file's unit; "" = guessed
   double cell_size_mm = 0;          // 0 = auto (3 point spacings)
-  double sheet_gap_mm = 0;          // 0 = auto (2.5 point spacings)
+  double sheet_gap_mm = 0;          // 0 = auto (2 x the 90th-percentile point spacing)
   int window = 30;                  // flow window, samples
   bool whole_path = false;          // flow whole paths (Algorithm 2 on the grid)
+  bool ignore_normals = false;      // true: do not use the scan's normals
 
   void Check() const {
     if (from.empty()) throw InputError("--from is required");
@@ -84,6 +85,7 @@ void WritePath(const CloudGeodesicPath& path, const std::filesystem::path& file)
 
 nlohmann::json Settings(const GeodesicCommandOptions& o, const CloudGrid& grid) {
   return {{"cell_size_mm", grid.cell_size_mm()},     {"sheet_gap_mm", grid.sheet_gap_mm()},
+          {"oriented_normals", grid.oriented()},
           {"point_spacing_mm", grid.spacing_mm()},   {"window", o.window},
           {"whole_path", o.whole_path},              {"cells", grid.num_cells()},
           {"nodes", grid.num_nodes()},               {"links", grid.num_links()}};
@@ -101,9 +103,12 @@ int Run(const GeodesicCommandOptions& o, const GlobalOptions& global) {
   options.grid.sheet_gap_mm = o.sheet_gap_mm;
   options.propagation.window = o.window;
   options.propagation.whole_path = o.whole_path;
+  options.grid.use_normals = !o.ignore_normals;
   ProgressBar progress(global.quiet);
   const auto start = std::chrono::steady_clock::now();
-  CloudGeodesics geodesics(options, scan.cloud.points, &progress);
+  CloudGeodesics geodesics(options, scan.cloud.points,
+                           scan.cloud.has_normals() ? scan.cloud.normals : Eigen::MatrixX3d(0, 3),
+                           &progress);
   nlohmann::json report = {{"scan", o.scan.string()},
                            {"file_unit", ToString(scan.report.unit)},
                            {"points", scan.cloud.size()},
@@ -179,9 +184,12 @@ CommandRunner SetupGeodesicCommand(CLI::App& app) {
   app.add_option("--units", o->units, "The scan's length unit: mm, cm, dm or m (default: guessed)");
   app.add_option("--cell-size", o->cell_size_mm, "Grid cell size in mm (default: 3 point spacings)");
   app.add_option("--sheet-gap", o->sheet_gap_mm,
-                 "Surfaces farther apart than this (mm) are never joined (default: 2.5 spacings)");
+                 "Surfaces farther apart than this (mm) are never joined (default: 2 x the 90th-percentile point spacing)");
   app.add_option("--window", o->window, "Samples flowed per propagation step (default 30)");
   app.add_flag("--whole-path", o->whole_path, "Flow whole paths while propagating (slower)");
+  app.add_flag("--ignore-normals", o->ignore_normals,
+               "Do not use the scan's normals (by default, where the file has outward normals, "
+               "surfaces facing opposite ways are never joined)");
   return [o](const GlobalOptions& global) { return Run(*o, global); };
 }
 

@@ -40,6 +40,11 @@ CloudGeodesics::CloudGeodesics(const CloudGeodesicsOptions& options,
                                const Eigen::MatrixX3d& points, Progress* progress)
     : options_(Checked(options)), grid_(options.grid, points, progress) {}
 
+CloudGeodesics::CloudGeodesics(const CloudGeodesicsOptions& options,
+                               const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& normals,
+                               Progress* progress)
+    : options_(Checked(options)), grid_(options.grid, points, normals, progress) {}
+
 CloudGeodesics::~CloudGeodesics() = default;
 
 // Whether `x` (`distance` from the nearest scan point, in node `node`) lies

@@ -82,6 +82,11 @@ class CloudGeodesics {
   // CloudGrid does.
   CloudGeodesics(const CloudGeodesicsOptions& options, const Eigen::MatrixX3d& points,
                  Progress* progress = nullptr);
+  // With the points' outward normals (#P x 3, or 0 x 3 for none): sheets
+  // closer than the point spacing are told apart by which way they face
+  // (see CloudGrid). Scanners and `bespoke clean` give such normals.
+  CloudGeodesics(const CloudGeodesicsOptions& options, const Eigen::MatrixX3d& points,
+                 const Eigen::MatrixX3d& normals, Progress* progress = nullptr);
   ~CloudGeodesics();
 
   const CloudGrid& grid() const { return grid_; }

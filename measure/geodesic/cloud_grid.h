@@ -21,6 +21,14 @@
 // by an air gap wider than sheet_gap_mm are never linked, so geodesics go
 // around, never through the air. Holes smaller than about a cell are bridged.
 //
+// Oriented normals (optional, #P x 3, e.g. a scanner's or `bespoke clean`'s
+// outward normals): where given, two points or nodes whose normals point to
+// opposite sides (dot < 0) are never one sheet, and links need the ORIENTED
+// normals to agree. That separates sheets closer than the point spacing that
+// positions alone cannot: the two lips of a slit (normals facing each other)
+// and the two sides of thin tissue (normals facing away), e.g. a mouth or an
+// eye socket 3-8 mm behind the skin of a body mesh sampled every 3.5 mm.
+//
 // The grid is also the TangentPlaneSource of the curvature flow: a sample is
 // assigned to the nearest site reachable by links from its hint node, and
 // gets that node's surface's tangent plane.
@@ -52,6 +60,11 @@ struct CloudGridOptions {
   // when cells are large compared with the spacing so a fit spans its cell.
   int neighbours = 32;
   double sheet_gap_mm = 0;         // 0 (default) = 2 x the 90th-percentile point spacing
+  // A node seeds its surface fit with a plane through its own points when it
+  // has at least this many (and 5), else through the points within a cell
+  // (or sheet_gap_mm if larger) of it: noise tilts a plane through a handful.
+  // Default 16; 5 gives the earlier rule's own-point threshold.
+  int min_seed_points = 16;
   double max_link_angle_deg = 60;  // default 60 degrees between linked normals
   SurfaceFit fit = SurfaceFit::kQuadric;  // default quadric (kPlane: the thesis)
   // Tangent planes blend the surfaces of the linked nodes whose sites lie
@@ -59,6 +72,9 @@ struct CloudGridOptions {
   // nearest node's alone: no steps between neighbouring fits, which matters
   // on noisy scans. 0 = nearest node only. Default 1.
   double blend_cells = 1.0;
+  // Use the oriented normals when the constructor is given them (default
+  // true); false ignores them (the thesis's unoriented grid).
+  bool use_normals = true;
   void Check() const;              // InputError when out of range
 };
 
@@ -75,6 +91,11 @@ class CloudGrid : public TangentPlaneSource {
  public:
   CloudGrid(const CloudGridOptions& options, const Eigen::MatrixX3d& points,
             Progress* progress = nullptr);
+  // `normals`: #P x 3 outward normals of the points (any length; a zero row
+  // = side unknown), or 0 x 3 for none. InputError when the row counts differ
+  // or a normal is not finite.
+  CloudGrid(const CloudGridOptions& options, const Eigen::MatrixX3d& points,
+            const Eigen::MatrixX3d& normals, Progress* progress = nullptr);
   ~CloudGrid() override;
 
   const PointIndex& index() const { return *index_; }
@@ -83,6 +104,7 @@ class CloudGrid : public TangentPlaneSource {
   double blend_radius_mm() const { return blend_; }
   int neighbours() const { return neighbours_; }      // d actually used
   double sheet_gap_mm() const { return gap_; }
+  bool oriented() const { return !node_normal_.empty(); }  // built with normals
   int num_cells() const { return static_cast<int>(cells_.size()); }
   int num_nodes() const { return static_cast<int>(sites_.size()); }
   std::int64_t num_links() const { return static_cast<std::int64_t>(link_targets_.size()) / 2; }
@@ -123,8 +145,12 @@ class CloudGrid : public TangentPlaneSource {
                TangentPlane* plane) const override;
 
  private:
-  void BuildCells(const Eigen::MatrixX3d& points);
-  void FitNodes(const CloudGridOptions& options, const Eigen::MatrixX3d& points);
+  void BuildCells(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d* normals);
+  // Dot product of the two nodes' surface normals at `pa`, `pb`: signed when
+  // both nodes are oriented, absolute otherwise.
+  double NormalAgreement(int a, const Eigen::Vector3d& pa, int b, const Eigen::Vector3d& pb) const;
+  void FitNodes(const CloudGridOptions& options, const Eigen::MatrixX3d& points,
+                const Eigen::MatrixX3d* normals);
   void LinkNodes(const CloudGridOptions& options);
   void LinkSparseNodes(double cos_max, std::vector<std::pair<int, int>>* pairs);
   void FindComponents();
@@ -146,6 +172,9 @@ class CloudGrid : public TangentPlaneSource {
   std::vector<Eigen::Vector3d> sites_;
   std::vector<LocalSurface> surfaces_;
   std::vector<double> local_spacing_;         // per node, mm
+  // Per node: the mean of its points' unit normals (length <= 1; < 0.5 = its
+  // points disagree, treated as unoriented). Empty without normals.
+  std::vector<Eigen::Vector3d> node_normal_;
   std::vector<int> link_offsets_, link_targets_;  // CSR adjacency
   LinkStats link_stats_;
   std::vector<int> component_;                // per node

@@ -33,6 +33,8 @@
 #include <vector>
 
 #include "measure/geodesic/cloud_geodesics.h"
+#include "measure/geodesic/local_surface.h"
+#include "measure/geodesic/point_index.h"
 #include "scanners/body/parametric_body.h"
 #include "scanners/catalogue/catalogue.h"
 #include "scanners/core/errors.h"
@@ -161,10 +163,12 @@ void PrintRow(const std::string& name, Eigen::Index points, double nodes, double
 }
 
 // Cloud single source in a child: {grid_s, prop_s, nodes, d_0 .. d_{Q-1}} at `query`.
+// `normals`: the cloud's outward normals, or 0 x 3 for none.
 std::vector<double> CloudField(const CloudGeodesicsOptions& options, const Eigen::MatrixX3d& cloud,
-                               const Eigen::Vector3d& source, const Eigen::MatrixX3d& query) {
+                               const Eigen::MatrixX3d& normals, const Eigen::Vector3d& source,
+                               const Eigen::MatrixX3d& query) {
   double t = Now();
-  CloudGeodesics geodesics(options, cloud);
+  CloudGeodesics geodesics(options, cloud, normals);
   const double grid_s = Now() - t;
   t = Now();
   geodesics.DistancesFrom(source);
@@ -189,14 +193,48 @@ Eigen::VectorXd Tail(const std::vector<double>& v, size_t skip) {
   return Eigen::Map<const Eigen::VectorXd>(v.data() + skip, static_cast<Eigen::Index>(v.size() - skip));
 }
 
-// One mesh row; returns the exact distances (for the growth rows).
+// Area-weighted vertex normals of a consistently oriented mesh (#V x 3, unit;
+// the normals a scanner's software or `bespoke clean` would give the cloud).
+Eigen::MatrixX3d VertexNormals(const TriangleMesh& mesh) {
+  Eigen::MatrixX3d normals = Eigen::MatrixX3d::Zero(mesh.num_vertices(), 3);
+  for (Eigen::Index f = 0; f < mesh.num_faces(); ++f) {
+    const Eigen::RowVector3d a = mesh.vertices.row(mesh.faces(f, 0));
+    const Eigen::RowVector3d n =
+        (mesh.vertices.row(mesh.faces(f, 1)) - a).cross(mesh.vertices.row(mesh.faces(f, 2)) - a);
+    for (int k = 0; k < 3; ++k) normals.row(mesh.faces(f, k)) += n;
+  }
+  for (Eigen::Index v = 0; v < normals.rows(); ++v)
+    if (normals.row(v).norm() > 0) normals.row(v).normalize();
+  return normals;
+}
+
+void Dump(const std::string& name, const Eigen::MatrixX3d& vertices, const Eigen::VectorXd& cloud,
+          const Eigen::VectorXd& exact) {
+  if (g_dump.empty()) return;  // per vertex: x y z cloud_mm exact_mm, to find where errors are
+  if (FILE* f = std::fopen((g_dump + "/" + name + ".txt").c_str(), "w")) {
+    for (Eigen::Index v = 0; v < vertices.rows(); ++v)
+      std::fprintf(f, "%.3f %.3f %.3f %.4f %.4f\n", vertices(v, 0), vertices(v, 1), vertices(v, 2),
+                   cloud[v], exact[v]);
+    std::fclose(f);
+  }
+}
+
+// One mesh row, and one with the mesh's vertex normals given to the cloud;
+// returns the exact distances (for the growth rows).
 Eigen::VectorXd MeshRow(const std::string& name, const TriangleMesh& mesh, bool cgal,
                         const CloudGeodesicsOptions& options) {
   double peak = 0, cgal_peak = 0;
   const auto cloud = InChild([&] {
-    return CloudField(options, mesh.vertices, mesh.vertices.row(0).transpose(), mesh.vertices);
+    return CloudField(options, mesh.vertices, Eigen::MatrixX3d(0, 3),
+                      mesh.vertices.row(0).transpose(), mesh.vertices);
   }, &peak);
   const double cpu = g_child_cpu_s;
+  double peak_n = 0;
+  const auto with_normals = InChild([&] {
+    return CloudField(options, mesh.vertices, VertexNormals(mesh),
+                      mesh.vertices.row(0).transpose(), mesh.vertices);
+  }, &peak_n);
+  const double cpu_n = g_child_cpu_s;
   Eigen::VectorXd exact = Eigen::VectorXd::Constant(mesh.num_vertices(), NAN);
   double cgal_s = 0, cgal_cpu = 0;
   if (cgal) {
@@ -216,16 +254,11 @@ Eigen::VectorXd MeshRow(const std::string& name, const TriangleMesh& mesh, bool 
   }
   PrintRow(name, mesh.num_vertices(), cloud[2], cloud[0], cloud[1], cpu, peak, cgal_s, cgal_cpu,
            cgal_peak, Compare(Tail(cloud, 3), exact));
-  if (!g_dump.empty()) {  // per vertex: x y z cloud_mm exact_mm, to find where errors are
-    const std::string file = g_dump + "/" + name.substr(0, name.find(' ')) + ".txt";
-    if (FILE* f = std::fopen(file.c_str(), "w")) {
-      const Eigen::VectorXd c = Tail(cloud, 3);
-      for (Eigen::Index v = 0; v < mesh.num_vertices(); ++v)
-        std::fprintf(f, "%.3f %.3f %.3f %.4f %.4f\n", mesh.vertices(v, 0), mesh.vertices(v, 1),
-                     mesh.vertices(v, 2), c[v], exact[v]);
-      std::fclose(f);
-    }
-  }
+  PrintRow("  + normals", mesh.num_vertices(), with_normals[2], with_normals[0], with_normals[1],
+           cpu_n, peak_n, cgal_s, cgal_cpu, cgal_peak, Compare(Tail(with_normals, 3), exact));
+  const std::string file = name.substr(0, name.find(' '));
+  Dump(file, mesh.vertices, Tail(cloud, 3), exact);
+  Dump(file + "-normals", mesh.vertices, Tail(with_normals, 3), exact);
   return exact;
 }
 
@@ -236,6 +269,26 @@ TriangleMesh LoadMesh(const std::filesystem::path& file, LengthUnit unit) {
   Mesh mesh = ReadMesh(read, file);
   mesh.mesh.vertices *= MillimetresPer(unit);
   return mesh.mesh;
+}
+
+// Normals as a scanner's software estimates them: a plane through each point's
+// 16 nearest neighbours, turned to face the sensor that saw the point (the
+// side of the simulator's `sensor_facing` normal). #P x 3, unit.
+Eigen::MatrixX3d SensorFacingNormals(const Eigen::MatrixX3d& cloud,
+                                     const Eigen::MatrixX3d& sensor_facing) {
+  const PointIndex index(cloud);
+  Eigen::MatrixX3d normals(cloud.rows(), 3);
+  std::vector<int> near;
+  std::vector<double> d2;
+  for (Eigen::Index i = 0; i < cloud.rows(); ++i) {
+    index.Knn(cloud.row(i).transpose(), 16, &near, &d2);
+    Eigen::MatrixX3d around(static_cast<Eigen::Index>(near.size()), 3);
+    for (size_t k = 0; k < near.size(); ++k) around.row(static_cast<Eigen::Index>(k)) = cloud.row(near[k]);
+    Eigen::Vector3d n = PcaPlane(around).normal();
+    if (n.dot(sensor_facing.row(i).transpose()) < 0) n = -n;
+    normals.row(i) = n.transpose();
+  }
+  return normals;
 }
 
 void GeneratedScanRows(bool cgal, bool quick, bool field_only) {
@@ -261,11 +314,17 @@ void GeneratedScanRows(bool cgal, bool quick, bool field_only) {
       seen[static_cast<size_t>(v)] = d2 <= 9.0;
     }
   }
-  double peak = 0, cgal_peak = 0;
+  double peak = 0, cgal_peak = 0, peak_n = 0;
   const auto field = InChild([&] {
-    return CloudField({}, cloud, PositionOf(body.mesh, source), body.mesh.vertices);
+    return CloudField({}, cloud, Eigen::MatrixX3d(0, 3), PositionOf(body.mesh, source),
+                      body.mesh.vertices);
   }, &peak);
   double cpu = g_child_cpu_s;
+  const auto field_n = InChild([&] {
+    return CloudField({}, cloud, SensorFacingNormals(cloud, scan.cloud.normals),
+                      PositionOf(body.mesh, source), body.mesh.vertices);
+  }, &peak_n);
+  const double cpu_n = g_child_cpu_s;
   Eigen::VectorXd exact = Eigen::VectorXd::Constant(body.mesh.num_vertices(), NAN);
   double cgal_s = 0, cgal_cpu = 0;
   if (cgal) {
@@ -279,13 +338,15 @@ void GeneratedScanRows(bool cgal, bool quick, bool field_only) {
               static_cast<long long>(std::count(seen.begin(), seen.end(), true)));
   PrintRow("generated scan, field", cloud.rows(), field[2], field[0], field[1], cpu, peak, cgal_s,
            cgal_cpu, cgal_peak, Compare(Tail(field, 3), exact, &seen));
-  if (!g_dump.empty()) {  // per body-mesh vertex: x y z cloud_mm exact_mm seen
+  PrintRow("  + normals", cloud.rows(), field_n[2], field_n[0], field_n[1], cpu_n, peak_n, cgal_s,
+           cgal_cpu, cgal_peak, Compare(Tail(field_n, 3), exact, &seen));
+  if (!g_dump.empty()) {  // per body-mesh vertex: x y z cloud_mm exact_mm seen cloud_normals_mm
     if (FILE* f = std::fopen((g_dump + "/generated.txt").c_str(), "w")) {
-      const Eigen::VectorXd c = Tail(field, 3);
+      const Eigen::VectorXd c = Tail(field, 3), cn = Tail(field_n, 3);
       for (Eigen::Index v = 0; v < body.mesh.num_vertices(); ++v)
-        std::fprintf(f, "%.3f %.3f %.3f %.4f %.4f %d\n", body.mesh.vertices(v, 0),
+        std::fprintf(f, "%.3f %.3f %.3f %.4f %.4f %d %.4f\n", body.mesh.vertices(v, 0),
                      body.mesh.vertices(v, 1), body.mesh.vertices(v, 2), c[v], exact[v],
-                     static_cast<int>(seen[static_cast<size_t>(v)]));
+                     static_cast<int>(seen[static_cast<size_t>(v)]), cn[v]);
       std::fclose(f);
     }
   }
@@ -385,7 +446,8 @@ int Main(int argc, char** argv) {
       options.grid.auto_cell_spacings = spacings;
       double peak = 0;
       const auto r = InChild([&] {
-        return CloudField(options, body.vertices, body.vertices.row(0).transpose(), body.vertices);
+        return CloudField(options, body.vertices, Eigen::MatrixX3d(0, 3),
+                          body.vertices.row(0).transpose(), body.vertices);
       }, &peak);
       PrintRow("cell " + std::to_string(static_cast<int>(spacings)) + " spacings",
                body.num_vertices(), r[2], r[0], r[1], g_child_cpu_s, peak, 0, 0, 0,

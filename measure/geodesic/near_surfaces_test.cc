@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "measure/geodesic/cloud_geodesics.h"
 #include "measure/geodesic/testing/sampled_surfaces.h"
@@ -113,6 +114,69 @@ TEST(NearSurfaces, CellsHoldOneNodePerSheet) {
     for (const int* l = grid.links_begin(node); l != grid.links_end(node); ++l)
       EXPECT_EQ(grid.site(*l).z() < 6, low) << node << " - " << *l;
   }
+}
+
+// Outward normals of a cylinder about the vertical axis through (cx, 0).
+Eigen::MatrixX3d CylinderNormals(const Eigen::MatrixX3d& points, double cx) {
+  Eigen::MatrixX3d normals = points;
+  normals.col(0).array() -= cx;
+  normals.col(2).setZero();
+  return normals;  // CloudGrid normalises them
+}
+
+// An arm 3 mm from the torso: closer than the sheet gap (about 4.4 mm at 2 mm
+// spacing), so points alone cannot tell the two surfaces apart and the grid
+// links them across the air. With the scan's outward normals (which face each
+// other across the gap) it never does, and lengths on the arm stay right.
+TEST(NearSurfaces, ArmCloserThanTheSheetGapIsSeparatedByItsNormals) {
+  const double arm_r = 40, torso_r = 110, gap = 3;
+  Eigen::MatrixX3d torso = testing::SampleCylinder({2.0, 0.0, 51}, torso_r, 300);
+  const double torso_x = arm_r + gap + torso_r;
+  torso.col(0).array() += torso_x;
+  const Eigen::MatrixX3d arm = testing::SampleCylinder({2.0, 0.0, 52}, arm_r, 300);
+  const Eigen::MatrixX3d cloud = testing::Concatenate(arm, torso);
+  const Eigen::MatrixX3d normals =
+      testing::Concatenate(CylinderNormals(arm, 0), CylinderNormals(torso, torso_x));
+  const Eigen::Vector3d on_arm(arm_r, 0, 150);
+
+  // Distance from the arm's facing line to the nearest torso point.
+  auto to_torso = [&](CloudGeodesics& geodesics) {
+    const CloudDistanceField field = geodesics.DistancesFrom(on_arm);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = arm.rows(); i < cloud.rows(); ++i)
+      nearest = std::min(nearest, field.point_distance_mm[i]);
+    return nearest;
+  };
+  CloudGeodesics points_only({}, cloud);
+  ASSERT_GT(points_only.grid().sheet_gap_mm(), gap);
+  EXPECT_LT(to_torso(points_only), 2 * gap);  // through the air
+
+  CloudGeodesics oriented({}, cloud, normals);
+  EXPECT_TRUE(oriented.grid().oriented());
+  EXPECT_FALSE(std::isfinite(to_torso(oriented)));  // no torso point is reachable
+  // Along the arm's facing line, 220 mm, within 0.5 %.
+  EXPECT_NEAR(oriented.Between(Eigen::Vector3d(arm_r, 0, 40), Eigen::Vector3d(arm_r, 0, 260))
+                  .length_mm,
+              220, 0.005 * 220);
+
+  // use_normals = false gives the points-only grid back.
+  CloudGeodesicsOptions ignore;
+  ignore.grid.use_normals = false;
+  CloudGeodesics ignored(ignore, cloud, normals);
+  EXPECT_FALSE(ignored.grid().oriented());
+  EXPECT_LT(to_torso(ignored), 2 * gap);
+}
+
+TEST(NearSurfaces, BadNormalsAreInputErrors) {
+  const Eigen::MatrixX3d cloud = testing::SamplePlane({2.0, 0.0, 61}, 30);
+  EXPECT_THROW(CloudGrid({}, cloud, Eigen::MatrixX3d::Zero(cloud.rows() - 1, 3)), InputError);
+  Eigen::MatrixX3d normals = Eigen::MatrixX3d::Zero(cloud.rows(), 3);
+  normals.col(2).setOnes();
+  normals(7, 1) = std::nan("");
+  EXPECT_THROW(CloudGrid({}, cloud, normals), InputError);
+  normals(7, 1) = 0;
+  normals.row(9).setZero();  // a point whose side is unknown is allowed
+  EXPECT_TRUE(CloudGrid({}, cloud, normals).oriented());
 }
 
 }  // namespace
