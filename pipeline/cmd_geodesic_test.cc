@@ -112,6 +112,15 @@ TEST_F(GeodesicCli, PointToPointPrintsTheLengthAndWritesThePathAndReport) {
   EXPECT_NEAR(report["length_mm"].get<double>(), printed, 0.01);
   EXPECT_EQ(report["points"].get<Eigen::Index>(), points_);
   EXPECT_GT(report["settings"]["cell_size_mm"].get<double>(), 0);
+  // The simulated scan has normals (facing the sensors): used unless told not to.
+  EXPECT_TRUE(report["settings"]["oriented_normals"].get<bool>());
+  const CommandResult plain =
+      Run("geodesic " + Q(ScanFile()) + " --units mm --from " + Xyz(from_) + " --to " + Xyz(to_) +
+          " --ignore-normals --report " + Q(out / "plain.json"));
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  const nlohmann::json plain_report = ReadJsonFile(out / "plain.json");
+  EXPECT_FALSE(plain_report["settings"]["oriented_normals"].get<bool>());
+  EXPECT_NEAR(plain_report["length_mm"].get<double>(), exact_mm_, 5.0);
 }
 
 TEST_F(GeodesicCli, FieldOutWritesADistancePerScanPoint) {
