@@ -41,7 +41,7 @@ struct GeodesicCommandOptions {
   double sheet_gap_mm = 0;          // 0 = auto (2 x the 90th-percentile point spacing)
   int window = 30;                  // flow window, samples
   bool whole_path = false;          // flow whole paths (Algorithm 2 on the grid)
-  bool ignore_normals = false;      // true: do not use the scan's normals
+  bool use_normals = false;         // use the scan's normals (must face outwards consistently)
 
   void Check() const {
     if (from.empty()) throw InputError("--from is required");
@@ -103,12 +103,13 @@ int Run(const GeodesicCommandOptions& o, const GlobalOptions& global) {
   options.grid.sheet_gap_mm = o.sheet_gap_mm;
   options.propagation.window = o.window;
   options.propagation.whole_path = o.whole_path;
-  options.grid.use_normals = !o.ignore_normals;
+  options.grid.use_normals = o.use_normals;
   ProgressBar progress(global.quiet);
   const auto start = std::chrono::steady_clock::now();
+  if (o.use_normals && !scan.cloud.has_normals())
+    throw InputError(o.scan.string() + ": --use-normals given but the file has no normals");
   CloudGeodesics geodesics(options, scan.cloud.points,
-                           scan.cloud.has_normals() ? scan.cloud.normals : Eigen::MatrixX3d(0, 3),
-                           &progress);
+                           o.use_normals ? scan.cloud.normals : Eigen::MatrixX3d(0, 3), &progress);
   nlohmann::json report = {{"scan", o.scan.string()},
                            {"file_unit", ToString(scan.report.unit)},
                            {"points", scan.cloud.size()},
@@ -187,9 +188,9 @@ CommandRunner SetupGeodesicCommand(CLI::App& app) {
                  "Surfaces farther apart than this (mm) are never joined (default: 2 x the 90th-percentile point spacing)");
   app.add_option("--window", o->window, "Samples flowed per propagation step (default 30)");
   app.add_flag("--whole-path", o->whole_path, "Flow whole paths while propagating (slower)");
-  app.add_flag("--ignore-normals", o->ignore_normals,
-               "Do not use the scan's normals (by default, where the file has outward normals, "
-               "surfaces facing opposite ways are never joined)");
+  app.add_flag("--use-normals", o->use_normals,
+               "Use the scan's normals: surfaces facing opposite ways are never joined (the "
+               "normals must face outwards consistently; wrongly turned patches cut the surface)");
   return [o](const GlobalOptions& global) { return Run(*o, global); };
 }
 

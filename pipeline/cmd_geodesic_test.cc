@@ -112,15 +112,15 @@ TEST_F(GeodesicCli, PointToPointPrintsTheLengthAndWritesThePathAndReport) {
   EXPECT_NEAR(report["length_mm"].get<double>(), printed, 0.01);
   EXPECT_EQ(report["points"].get<Eigen::Index>(), points_);
   EXPECT_GT(report["settings"]["cell_size_mm"].get<double>(), 0);
-  // The simulated scan has normals (facing the sensors): used unless told not to.
-  EXPECT_TRUE(report["settings"]["oriented_normals"].get<bool>());
-  const CommandResult plain =
+  // The simulated scan has normals (facing the sensors): used only when asked.
+  EXPECT_FALSE(report["settings"]["oriented_normals"].get<bool>());
+  const CommandResult oriented =
       Run("geodesic " + Q(ScanFile()) + " --units mm --from " + Xyz(from_) + " --to " + Xyz(to_) +
-          " --ignore-normals --report " + Q(out / "plain.json"));
-  ASSERT_EQ(plain.exit_code, 0) << plain.err;
-  const nlohmann::json plain_report = ReadJsonFile(out / "plain.json");
-  EXPECT_FALSE(plain_report["settings"]["oriented_normals"].get<bool>());
-  EXPECT_NEAR(plain_report["length_mm"].get<double>(), exact_mm_, 5.0);
+          " --use-normals --report " + Q(out / "oriented.json"));
+  ASSERT_EQ(oriented.exit_code, 0) << oriented.err;
+  const nlohmann::json oriented_report = ReadJsonFile(out / "oriented.json");
+  EXPECT_TRUE(oriented_report["settings"]["oriented_normals"].get<bool>());
+  EXPECT_NEAR(oriented_report["length_mm"].get<double>(), exact_mm_, 5.0);
 }
 
 TEST_F(GeodesicCli, FieldOutWritesADistancePerScanPoint) {
@@ -168,6 +168,18 @@ TEST_F(GeodesicCli, BadCoordinatesExitOneWithAClearMessageAndNoOutput) {
   run = Run("geodesic " + Q(out / "missing.ply") + " --from 1,2,3 --to 4,5,6");
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_NE(run.err.find("missing.ply"), std::string::npos) << run.err;
+  // --use-normals on a file without normals.
+  ReadOptions read;
+  read.units = LengthUnit::kMillimetre;
+  Scan bare = ReadScan(read, ScanFile());
+  bare.cloud.normals.resize(0, 3);
+  WriteScan(WriteOptions{}, bare.cloud, out / "bare.ply");
+  run = Run("geodesic " + Q(out / "bare.ply") + " --units mm --from " + Xyz(from_) + " --to " +
+            Xyz(to_) + " --use-normals --path-out " + Q(out / "p.ply"));
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.err.find("bare.ply: --use-normals given but the file has no normals"),
+            std::string::npos)
+      << run.err;
   EXPECT_FALSE(std::filesystem::exists(out / "p.ply"));
 }
 

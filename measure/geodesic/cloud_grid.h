@@ -21,13 +21,14 @@
 // by an air gap wider than sheet_gap_mm are never linked, so geodesics go
 // around, never through the air. Holes smaller than about a cell are bridged.
 //
-// Oriented normals (optional, #P x 3, e.g. a scanner's or `bespoke clean`'s
-// outward normals): where given, two points or nodes whose normals point to
-// opposite sides (dot < 0) are never one sheet, and links need the ORIENTED
-// normals to agree. That separates sheets closer than the point spacing that
-// positions alone cannot: the two lips of a slit (normals facing each other)
-// and the two sides of thin tissue (normals facing away), e.g. a mouth or an
-// eye socket 3-8 mm behind the skin of a body mesh sampled every 3.5 mm.
+// Oriented normals (optional, #P x 3, consistently outward, e.g. a mesh's
+// vertex normals or a scanner's sensor-facing ones): where given, two points
+// or nodes whose normals point to opposite sides (dot < 0) are never one
+// sheet, and links need the ORIENTED normals to agree. That separates sheets
+// closer than the sheet gap that positions alone cannot: the two lips of a
+// slit (normals facing each other) and the two sides of thin tissue (normals
+// facing away), e.g. a mouth cavity 8 mm behind the skin of a body mesh
+// sampled every 3.5 mm.
 //
 // The grid is also the TangentPlaneSource of the curvature flow: a sample is
 // assigned to the nearest site reachable by links from its hint node, and
