@@ -213,7 +213,7 @@ TEST(CloudGeodesics, DistanceFieldOnTheSphere) {
 // normal): every point is reached and every point at least 10 mm from the
 // source is within 3 % of the great-circle distance (mean within 0.5 %). Cells
 // holding a few noisy points used to fit planes tilted into the tangent
-// plane, link to nothing and leave islands (20 points unreached and a 21 %
+// plane, link to nothing and leave islands (21 points unreached and a 21 %
 // error with seed 1 before min_seed_points).
 TEST(CloudGeodesics, NoisySphereFieldReachesEveryPointWithinThreePercent) {
   const double r = 80;

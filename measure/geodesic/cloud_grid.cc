@@ -175,7 +175,7 @@ void CloudGrid::FitNodes(const CloudGridOptions& options, const Eigen::MatrixX3d
     // it has at least min_seed_points of them, else from the points within a
     // cell (or the sheet gap, if larger) of it. A plane through a handful of
     // noisy points tilts: a 5-point sliver along a cell's edge had its
-    // "normal" in the tangent plane, linked to nothing and left islands (20
+    // "normal" in the tangent plane, linked to nothing and left islands (21
     // unreached points and a 21 % error on a noisy sphere; +14 mm 30 mm from
     // the source on the benchmark's generated scan).
     double planarity = 1;
