@@ -85,7 +85,8 @@ nlohmann::json ToJson(const CleanResult& r) {
        {{"by_exterior", r.normals.by_exterior},
         {"by_propagation", r.normals.by_propagation},
         {"by_fallback", r.normals.by_fallback},
-        {"degenerate", r.normals.degenerate}}},
+        {"degenerate", r.normals.degenerate},
+        {"closing_mm", r.normals.closing_mm}}},
       {"flags", r.flags},
   };
 }

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -166,19 +168,53 @@ void FitNormals(const NormalOptions& options, const Eigen::MatrixX3d& points,
   }
 }
 
-// Step 1: +1 / -1 where the exterior test decides, 0 where it does not.
+// A point inside the torso: 60 % of the way up (body frame, z up), at the
+// median x of the points 55-65 % up and half way between the front-most and
+// back-most of those within 60 mm of that median (the midline strip: arms
+// held in front are lateral). If the flood fill reached it, the body's inside
+// leaked into the "outside" through a hole wider than the closing, and both
+// probe directions leave the shell at about the same distance.
+Eigen::Vector3d TorsoInside(const Eigen::MatrixX3d& points) {
+  const double low = points.col(2).minCoeff(), high = points.col(2).maxCoeff();
+  std::vector<Eigen::Index> band;
+  std::vector<double> xs;
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    const double t = (points(i, 2) - low) / std::max(1e-9, high - low);
+    if (t >= 0.55 && t <= 0.65) band.push_back(i), xs.push_back(points(i, 0));
+  }
+  const double z = low + 0.6 * (high - low);
+  if (xs.empty()) return Eigen::Vector3d(0, 0, z);
+  std::nth_element(xs.begin(), xs.begin() + static_cast<std::ptrdiff_t>(xs.size() / 2), xs.end());
+  const double x = xs[xs.size() / 2];
+  double front = -std::numeric_limits<double>::infinity(), back = -front;
+  for (const Eigen::Index i : band)
+    if (std::abs(points(i, 0) - x) <= 60) front = std::max(front, points(i, 1)), back = std::min(back, points(i, 1));
+  return Eigen::Vector3d(x, std::isfinite(front) ? 0.5 * (front + back) : 0.0, z);
+}
+
+// Step 1: +1 / -1 where the exterior test decides, 0 where it does not. The
+// closing grows by 10 mm (the probe with it) while the torso's inside is
+// flooded, up to 3 times; `closing_mm` gets the closing used.
 std::vector<signed char> ExteriorVotes(const NormalOptions& options, const Eigen::MatrixX3d& points,
-                                       const Eigen::MatrixX3d& normals) {
-  const ExteriorGrid grid(options, points);
-  const double step = grid.cell() / 2;
-  const int steps = static_cast<int>(std::ceil(options.probe_mm / step));
+                                       const Eigen::MatrixX3d& normals, double* closing_mm) {
+  NormalOptions o = options;
+  const Eigen::Vector3d inside = TorsoInside(points);
+  auto grid = std::make_unique<ExteriorGrid>(o, points);
+  for (int attempt = 0; attempt < 3 && grid->Outside(inside); ++attempt) {
+    o.probe_mm *= (o.hole_close_mm + 10) / std::max(1.0, o.hole_close_mm);
+    o.hole_close_mm += 10;
+    grid = std::make_unique<ExteriorGrid>(o, points);
+  }
+  *closing_mm = o.hole_close_mm;
+  const double step = grid->cell() / 2;
+  const int steps = static_cast<int>(std::ceil(o.probe_mm / step));
   std::vector<signed char> vote(static_cast<size_t>(points.rows()), 0);
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
     const Eigen::Vector3d p = points.row(i).transpose();
     const Eigen::Vector3d n = normals.row(i).transpose();
     for (int s = 1; s <= steps; ++s) {
-      const bool out_plus = grid.Outside(p + s * step * n);
-      const bool out_minus = grid.Outside(p - s * step * n);
+      const bool out_plus = grid->Outside(p + s * step * n);
+      const bool out_minus = grid->Outside(p - s * step * n);
       if (out_plus != out_minus) {
         vote[static_cast<size_t>(i)] = out_plus ? 1 : -1;
         break;
@@ -216,7 +252,8 @@ OrientedNormals EstimateOutwardNormals(const NormalOptions& options,
   std::vector<char> fitted;
   FitNormals(options, body_points, neighbours, &result.normals, &fitted);
 
-  std::vector<signed char> vote = ExteriorVotes(options, body_points, result.normals);
+  std::vector<signed char> vote =
+      ExteriorVotes(options, body_points, result.normals, &result.report.closing_mm);
   std::vector<char> decided(static_cast<size_t>(n), 0);
   for (Eigen::Index i = 0; i < n; ++i) {
     const auto u = static_cast<size_t>(i);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -54,6 +55,42 @@ TEST(NormalsTest, SphereWithHolesPointsOut) {
   double worst = 1;
   for (Eigen::Index i = 0; i < points.rows(); ++i) worst = std::min(worst, normals.normals.row(i).dot(truth.row(i)));
   EXPECT_GT(worst, std::cos(10.0 * M_PI / 180.0));
+}
+
+// A body-sized closed surface (a capsule, 300 mm across) with a 70 mm hole in
+// the side: wider than the 20 mm closing seals (about 40 mm), so the inside
+// is flooded as "outside" and both probe directions leave the shell at the
+// same distance. The inside check sees the torso's inside flooded and closes
+// wider (30 mm, then 40 mm); every normal then points out.
+TEST(NormalsTest, WideHoleIntoTheInsideIsClosedAndNormalsPointOut) {
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> u(0, 1);
+  const double r = 150, h = 1000;  // radius, height of the straight part
+  std::vector<Eigen::Vector3d> points, truth;
+  while (points.size() < 60000) {
+    const double a = 2 * M_PI * u(rng), z = -r + (h + 2 * r) * u(rng);
+    Eigen::Vector3d n(std::cos(a), std::sin(a), 0);
+    Eigen::Vector3d p = Eigen::Vector3d(0, 0, r) + r * n + Eigen::Vector3d(0, 0, std::clamp(z, 0.0, h));
+    if (z < 0 || z > h) {  // the caps: a hemisphere below and above
+      const double c = z < 0 ? 0 : h, lat = std::asin(std::clamp((z - c) / r, -1.0, 1.0));
+      n = Eigen::Vector3d(std::cos(lat) * std::cos(a), std::cos(lat) * std::sin(a), std::sin(lat));
+      p = Eigen::Vector3d(0, 0, r + c) + r * n;
+    }
+    if ((p - Eigen::Vector3d(r, 0, r + 0.6 * h)).norm() < 35) continue;  // the hole, at torso height
+    points.push_back(p), truth.push_back(n);
+  }
+  Eigen::MatrixX3d cloud(static_cast<Eigen::Index>(points.size()), 3), normals_true(cloud.rows(), 3);
+  for (size_t i = 0; i < points.size(); ++i) {
+    cloud.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
+    normals_true.row(static_cast<Eigen::Index>(i)) = truth[i].transpose();
+  }
+  NormalOptions options;
+  const OrientedNormals normals =
+      EstimateOutwardNormals(options, cloud, FindNearestNeighbours(cloud, options.k));
+  EXPECT_GT(normals.report.closing_mm, options.hole_close_mm);
+  double outward = 0;
+  for (Eigen::Index i = 0; i < cloud.rows(); ++i) outward += normals.normals.row(i).dot(normals_true.row(i)) > 0;
+  EXPECT_GT(outward / static_cast<double>(cloud.rows()), 0.999);
 }
 
 // The synthetic person (body frame), voxelised as the chain does, with a gap
