@@ -85,8 +85,8 @@ class CloudGeodesics {
   // With the points' outward normals (#P x 3, or 0 x 3 for none): sheets
   // closer than the point spacing are told apart by which way they face
   // (see CloudGrid). They must face outwards consistently: a patch turned
-  // the wrong way cuts the surface (docs/geodesics.md: `bespoke clean`'s
-  // normals broke lengths on MakeHuman scans, so the measuring passes none).
+  // the wrong way cuts the surface (docs/geodesics.md). The measuring passes
+  // none (measured: no gain).
   CloudGeodesics(const CloudGeodesicsOptions& options, const Eigen::MatrixX3d& points,
                  const Eigen::MatrixX3d& normals, Progress* progress = nullptr);
   ~CloudGeodesics();
