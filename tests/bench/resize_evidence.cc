@@ -29,6 +29,7 @@
 #include "resize/io/pattern_json.h"
 #include "scanners/core/errors.h"
 #include "scanners/core/json_io.h"
+#include "tests/bench/bench_main.h"
 
 namespace {
 int Run(int argc, char** argv) {
@@ -127,16 +128,5 @@ int Run(int argc, char** argv) {
 }
 }  // namespace
 
-// Errors end the run with a message and an exit code, never an abort:
-// 1 for bad input (options, measurement files), 2 for anything else.
-int main(int argc, char** argv) {
-  try {
-    return Run(argc, argv);
-  } catch (const bespoke::InputError& e) {
-    std::fprintf(stderr, "%s: %s\n", "resize_evidence", e.what());
-    return 1;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s: internal error: %s\n", "resize_evidence", e.what());
-    return 2;
-  }
-}
+// Errors end the run with a message and an exit code (1 bad input, 2 other).
+int main(int argc, char** argv) { return bespoke::RunBenchMain("resize_evidence", Run, argc, argv); }
