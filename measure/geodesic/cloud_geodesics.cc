@@ -85,6 +85,19 @@ std::pair<Eigen::Vector3d, int> CloudGeodesics::Snap(const Eigen::Vector3d& x,
   const double hole_limit = std::max(limit, options_.max_hole_snap_distance_mm);
   double distance = 0;
   int node = grid_.LocateNode(x, &distance, component);
+  if (component >= 0 && grid_.component(node) == component) {
+    // A nearer point on another sizeable piece: x lies on that piece, not
+    // on `component` (a target across a gap the grid does not link must
+    // not snap back onto the source's piece; small islands are skipped).
+    double nearest_distance = 0;
+    const int nearest = grid_.LocateNode(x, &nearest_distance);
+    const auto& sizes = grid_.component_points();
+    if (grid_.component(nearest) != component && nearest_distance < distance &&
+        sizes[static_cast<size_t>(grid_.component(nearest))] >= 0.05 * sizes[0]) {
+      node = nearest;
+      distance = nearest_distance;
+    }
+  }
   if (component < 0) {
     const auto& sizes = grid_.component_points();
     if (sizes[static_cast<size_t>(grid_.component(node))] < 0.05 * sizes[0]) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "measure/geodesic/cloud_geodesics.h"
 #include "measure/geodesic/testing/sampled_surfaces.h"
@@ -165,6 +166,28 @@ TEST(NearSurfaces, ArmCloserThanTheSheetGapIsSeparatedByItsNormals) {
   CloudGeodesics ignored(ignore, cloud, normals);
   EXPECT_FALSE(ignored.grid().oriented());
   EXPECT_LT(to_torso(ignored), 2 * gap);
+}
+
+// Two unconnected plates 15 mm apart (within the 24 mm a query point may lie
+// off the scan): a path from one to the other is an input error naming the
+// two pieces, never the 0 mm of snapping the target onto the source's plate.
+TEST(NearSurfaces, PointsOnSeparatePlatesHaveNoPath) {
+  Eigen::MatrixX3d upper = testing::SamplePlane({2.0, 0.0, 71}, 60);
+  upper.col(2).array() += 15;
+  const Eigen::MatrixX3d cloud =
+      testing::Concatenate(testing::SamplePlane({2.0, 0.0, 72}, 60), upper);
+  CloudGeodesicsOptions options;
+  options.grid.cell_size_mm = 8;
+  CloudGeodesics geodesics(options, cloud);
+  ASSERT_EQ(geodesics.grid().component_points().size(), 2u);
+  try {
+    geodesics.Between(Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(10, 0, 15));
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("separate pieces"), std::string::npos) << e.what();
+  }
+  EXPECT_NEAR(geodesics.Between(Eigen::Vector3d(-20, 0, 15), Eigen::Vector3d(30, 0, 15)).length_mm,
+              50, 0.25);
 }
 
 TEST(NearSurfaces, BadNormalsAreInputErrors) {
