@@ -13,6 +13,7 @@ void CloudGeodesicsOptions::Check() const {
   grid.Check();
   propagation.Check();
   polish_flow.Check();
+  point_field.Check();
   if (!(max_snap_distance_mm >= 0) || !std::isfinite(max_snap_distance_mm))
     throw InputError("geodesics: max_snap_distance_mm must be >= 0");
   if (!(max_hole_snap_distance_mm >= 0) || !std::isfinite(max_hole_snap_distance_mm))
@@ -172,25 +173,80 @@ CloudDistanceField CloudGeodesics::DistancesFrom(const Eigen::Vector3d& source,
   for (int i = 0; i < grid_.num_nodes(); ++i)
     field.node_distance_mm[i] = propagation.distance_mm(i);
   const Eigen::MatrixX3d& points = grid_.index().points();
-  field.point_distance_mm.resize(points.rows());
+  field_distance_.resize(points.rows());
   for (Eigen::Index i = 0; i < points.rows(); ++i)
-    field.point_distance_mm[i] =
+    field_distance_[i] =
         propagation.DistanceNear(grid_.node_of_point(i), points.row(i).transpose());
+  if (options_.point_field.enabled)
+    SweepPoints(point, hole ? RimNodes(source, snap, node) : std::vector<int>());
+  field.point_distance_mm = field_distance_;
   return field;
+}
+
+// The per-point field (point_field.h) over field_distance_, which holds the
+// grid's first-order values: seeded with them within seed_radius_cells of
+// the source, where the grid's flowed paths are best and a sweep's wavefront
+// is most curved, and on the whole rim of a hole the source lies in (the
+// chords across it); `point`: the source on the surface (or in the hole).
+// Where the two agree within agree_fraction the grid's value stays (its
+// flowed paths are straighter than the sweep's graph: mean error 0.18 % vs
+// 0.22 % on the 116k body, 0.097 % vs 0.130 % on a generated scan); where
+// they do not, the grid has blurred a feature and the sweep's value is taken.
+void CloudGeodesics::SweepPoints(const Eigen::Vector3d& point, const std::vector<int>& rim_nodes) {
+  const Eigen::MatrixX3d& points = grid_.index().points();
+  const double radius = options_.point_field.seed_radius_cells * grid_.cell_size_mm();
+  std::vector<char> rim(static_cast<size_t>(grid_.num_nodes()), 0);
+  for (const int n : rim_nodes) rim[static_cast<size_t>(n)] = 1;
+  std::vector<PointSeed> seeds;
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+    if (std::isfinite(field_distance_[i]) &&
+        (field_distance_[i] <= radius || rim[static_cast<size_t>(grid_.node_of_point(i))]))
+      seeds.push_back({static_cast<int>(i), field_distance_[i]});
+  const int nearest = grid_.index().Nearest(point);
+  if (std::isfinite(field_distance_[nearest]))
+    seeds.push_back({nearest, field_distance_[nearest]});
+  const Eigen::VectorXd swept = PointDistanceField(options_.point_field, grid_, seeds);
+  // A point no chord along the surface reaches (a lone noisy point, a
+  // pocket): the nearest swept point on the same surface plus the straight
+  // step, else its node's value.
+  std::vector<int> near;
+  std::vector<double> d2;
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    const double cells = field_distance_[i];
+    if (std::isfinite(swept[i]) || !std::isfinite(cells)) {
+      const double tolerance = options_.point_field.agree_fraction * swept[i];
+      const bool agree = std::abs(swept[i] - cells) <= tolerance;
+      field_distance_[i] = agree ? cells : swept[i];
+      continue;
+    }
+    const Eigen::Vector3d x = points.row(i).transpose();
+    grid_.index().Knn(x, 2 * options_.point_field.neighbours, &near, &d2);
+    double best = std::numeric_limits<double>::infinity();
+    for (size_t k = 0; k < near.size(); ++k)
+      if (std::isfinite(swept[near[k]]) &&
+          grid_.StepOnSurface(grid_.node_of_point(i), x, grid_.node_of_point(near[k]),
+                              grid_.index().point(near[k])))
+        best = std::min(best, swept[near[k]] + std::sqrt(d2[k]));
+    if (std::isfinite(best)) field_distance_[i] = best;
+  }
 }
 
 Eigen::VectorXd CloudGeodesics::DistancesAt(const Eigen::MatrixX3d& points) {
   if (!field_source_ || !cached_ || cached_->source() != *field_source_)
     throw InputError("geodesics: DistancesAt needs a distance field (DistancesFrom) first");
   cached_->Run(-1);
-  Eigen::VectorXd out(points.rows());
+  const int component = grid_.component(cached_->source_node());
+  Eigen::VectorXd out =
+      Eigen::VectorXd::Constant(points.rows(), std::numeric_limits<double>::infinity());
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
     const Eigen::Vector3d x = points.row(i).transpose();
+    if (!x.allFinite()) continue;
     // Prefer the source's piece of the scan over a small unreached island.
-    out[i] = x.allFinite()
-                 ? cached_->DistanceNear(
-                       grid_.LocateNode(x, nullptr, grid_.component(cached_->source_node())), x)
-                 : std::numeric_limits<double>::infinity();
+    const int q = grid_.LocatePoint(x, nullptr, component);
+    const int node = grid_.node_of_point(q);
+    const Eigen::Vector3d xq = grid_.index().point(q);
+    const double change = cached_->DistanceNear(node, x) - cached_->DistanceNear(node, xq);
+    out[i] = field_distance_[q] + (std::isfinite(change) ? change : (x - xq).norm());
   }
   return out;
 }

@@ -6,9 +6,11 @@
 // propagation of the last source, so point-to-point queries sharing a start
 // point reuse it. Not thread-safe (that cache); one object per thread.
 //
-//   DistancesFrom(source): single source to all destinations (Algorithm 5),
-//     a distance per grid node and per scan point (the node's distance carried
-//     to the point to first order along the path's direction).
+//   DistancesFrom(source): single source to all destinations: a distance per
+//     grid node (Algorithm 5) and per scan point (point_field.h: a sweep over
+//     the points along the grid's surface connections, which resolves
+//     features about a cell thick; or, with point_field.enabled = false, the
+//     node's distance carried to the point to first order along its path).
 //   Between(from, to): point to point. Propagates only until the target's
 //     node is settled, then flows the whole inherited path (resampled to
 //     polish_spacing_mm) with its true end points: the windowed propagation
@@ -27,6 +29,7 @@
 #include <vector>
 
 #include "measure/geodesic/cloud_grid.h"
+#include "measure/geodesic/point_field.h"
 #include "measure/geodesic/propagation.h"
 
 namespace bespoke {
@@ -50,6 +53,8 @@ struct CloudGeodesicsOptions {
   // Sample spacing of that final flow; 0 (default) = half a cell.
   double polish_spacing_mm = 0;
   CurvatureFlowOptions polish_flow = {100, 0.001, 1.0};  // 100 iterations, 0.001 mm
+  // Distance fields: the scan points' distances (point_field.h); default on.
+  PointFieldOptions point_field;
   void Check() const;  // InputError when out of range
 };
 
@@ -97,9 +102,10 @@ class CloudGeodesics {
   CloudDistanceField DistancesFrom(const Eigen::Vector3d& source, Progress* progress = nullptr);
   CloudGeodesicPath Between(const Eigen::Vector3d& from, const Eigen::Vector3d& to);
   // Distances from the last DistancesFrom source to other points near the
-  // surface (#Q x 3, mm; e.g. a mesh's vertices): each point takes the node
-  // of its nearest scan point on the source's piece of the scan, carried to
-  // first order as for the scan's own points.
+  // surface (#Q x 3, mm; e.g. a mesh's vertices): each point takes the
+  // distance of its nearest scan point on the source's piece of the scan plus
+  // the change of that point's node's first-order field between the two (a
+  // scan point gets exactly its DistancesFrom value).
   // +inf where unreachable. InputError before any DistancesFrom call.
   Eigen::VectorXd DistancesAt(const Eigen::MatrixX3d& points);
 
@@ -123,11 +129,13 @@ class CloudGeodesics {
                                        int node_a, int node_b, double snap_a, double snap_b,
                                        bool hole_a, bool hole_b);
   bool InUnscannedRegion(const Eigen::Vector3d& x, double distance, int node) const;
+  void SweepPoints(const Eigen::Vector3d& point, const std::vector<int>& rim_nodes);
 
   CloudGeodesicsOptions options_;
   CloudGrid grid_;
   std::unique_ptr<Propagation> cached_;
   std::optional<Eigen::Vector3d> field_source_;  // source of the last DistancesFrom
+  Eigen::VectorXd field_distance_;                // and its per-point distances, mm
 };
 
 }  // namespace bespoke

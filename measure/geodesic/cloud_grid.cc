@@ -86,6 +86,7 @@ CloudGrid::CloudGrid(const CloudGridOptions& options, const Eigen::MatrixX3d& po
   ProgressUpdate(progress, 2);
   LinkNodes(options);
   FindComponents();
+  if (unit) point_normals_ = *unit;
   ProgressUpdate(progress, 3);
   ProgressEnd(progress);
 }
@@ -320,11 +321,11 @@ void CloudGrid::LinkSparseNodes(double cos_max, std::vector<std::pair<int, int>>
   link_stats_.long_links = static_cast<std::int64_t>(pairs->size() - before);
 }
 
-int CloudGrid::LocateNode(const Eigen::Vector3d& x, double* distance_mm, int component) const {
+int CloudGrid::LocatePoint(const Eigen::Vector3d& x, double* distance_mm, int component) const {
   double d2 = 0;
-  const int point = index_->Nearest(x, &d2);
-  int node = point_node_[static_cast<size_t>(point)];
-  if (component >= 0 && component_[static_cast<size_t>(node)] != component) {
+  int point = index_->Nearest(x, &d2);
+  if (component >= 0 && component_[static_cast<size_t>(point_node_[static_cast<size_t>(point)])] !=
+                            component) {
     std::vector<int> near;
     std::vector<double> near_d2;
     bool found = false;
@@ -333,7 +334,7 @@ int CloudGrid::LocateNode(const Eigen::Vector3d& x, double* distance_mm, int com
       for (size_t i = 0; i < near.size() && !found; ++i) {
         const int candidate = point_node_[static_cast<size_t>(near[i])];
         if (component_[static_cast<size_t>(candidate)] == component) {
-          node = candidate;
+          point = near[i];
           d2 = near_d2[i];
           found = true;
         }
@@ -342,7 +343,11 @@ int CloudGrid::LocateNode(const Eigen::Vector3d& x, double* distance_mm, int com
     }
   }
   if (distance_mm) *distance_mm = std::sqrt(d2);
-  return node;
+  return point;
+}
+
+int CloudGrid::LocateNode(const Eigen::Vector3d& x, double* distance_mm, int component) const {
+  return point_node_[static_cast<size_t>(LocatePoint(x, distance_mm, component))];
 }
 
 bool CloudGrid::WithinHops(int a, int b, int hops) const {

@@ -115,6 +115,9 @@ class CloudGrid : public TangentPlaneSource {
   const int* links_begin(int node) const { return link_targets_.data() + link_offsets_[node]; }
   const int* links_end(int node) const { return link_targets_.data() + link_offsets_[node + 1]; }
   int node_of_point(Eigen::Index point) const { return point_node_[static_cast<size_t>(point)]; }
+  // The given oriented normals, unit (zero rows: side unknown); 0 x 3 when
+  // built without them.
+  const Eigen::MatrixX3d& point_normals() const { return point_normals_; }
   const LinkStats& link_stats() const { return link_stats_; }
   // Approximate bytes held by the grid (sites, surfaces, links, maps, index).
   std::int64_t memory_bytes() const;
@@ -125,6 +128,9 @@ class CloudGrid : public TangentPlaneSource {
   // as the crotch leave small islands of points that a query should skip).
   int LocateNode(const Eigen::Vector3d& x, double* distance_mm = nullptr,
                  int component = -1) const;
+  // The same, returning the scan point's index instead of its node.
+  int LocatePoint(const Eigen::Vector3d& x, double* distance_mm = nullptr,
+                  int component = -1) const;
   // True when `a` and `b` are at most `hops` links apart (0: the same node).
   // Consecutive samples of a path on the surface are within a few hops; a
   // path cut across a gap joins nodes that are far apart in the graph.
@@ -176,6 +182,7 @@ class CloudGrid : public TangentPlaneSource {
   // Per node: the mean of its points' unit normals (length <= 1; < 0.5 = its
   // points disagree, treated as unoriented). Empty without normals.
   std::vector<Eigen::Vector3d> node_normal_;
+  Eigen::MatrixX3d point_normals_;            // #P x 3 unit, or 0 x 3
   std::vector<int> link_offsets_, link_targets_;  // CSR adjacency
   LinkStats link_stats_;
   std::vector<int> component_;                // per node

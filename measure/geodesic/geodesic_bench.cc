@@ -219,8 +219,9 @@ void Dump(const std::string& name, const Eigen::MatrixX3d& vertices, const Eigen
   }
 }
 
-// One mesh row, and one with the mesh's vertex normals given to the cloud;
-// returns the exact distances (for the growth rows).
+// One mesh row, one with the mesh's vertex normals given to the cloud, and
+// one with the grid's cells alone (no per-point field); returns the exact
+// distances (for the growth rows).
 Eigen::VectorXd MeshRow(const std::string& name, const TriangleMesh& mesh, bool cgal,
                         const CloudGeodesicsOptions& options) {
   double peak = 0, cgal_peak = 0;
@@ -236,6 +237,15 @@ Eigen::VectorXd MeshRow(const std::string& name, const TriangleMesh& mesh, bool 
                       mesh.vertices);
   }, &peak_n);
   const double cpu_n = g_child_cpu_s;
+  // The thesis's cells alone: each point takes its node's distance.
+  CloudGeodesicsOptions cells_only = options;
+  cells_only.point_field.enabled = false;
+  double peak_c = 0;
+  const auto cells = InChild([&] {
+    return CloudField(cells_only, mesh.vertices, Eigen::MatrixX3d(0, 3),
+                      mesh.vertices.row(0).transpose(), mesh.vertices);
+  }, &peak_c);
+  const double cpu_c = g_child_cpu_s;
   Eigen::VectorXd exact = Eigen::VectorXd::Constant(mesh.num_vertices(), NAN);
   double cgal_s = 0, cgal_cpu = 0;
   if (cgal) {
@@ -257,6 +267,8 @@ Eigen::VectorXd MeshRow(const std::string& name, const TriangleMesh& mesh, bool 
            cgal_peak, Compare(Tail(cloud, 3), exact));
   PrintRow("  + normals", mesh.num_vertices(), with_normals[2], with_normals[0], with_normals[1],
            cpu_n, peak_n, cgal_s, cgal_cpu, cgal_peak, Compare(Tail(with_normals, 3), exact));
+  PrintRow("  cells only (Alg 5)", mesh.num_vertices(), cells[2], cells[0], cells[1], cpu_c,
+           peak_c, cgal_s, cgal_cpu, cgal_peak, Compare(Tail(cells, 3), exact));
   const std::string file = name.substr(0, name.find(' '));
   Dump(file, mesh.vertices, Tail(cloud, 3), exact);
   Dump(file + "-normals", mesh.vertices, Tail(with_normals, 3), exact);

@@ -148,9 +148,16 @@ TEST(NearSurfaces, ArmCloserThanTheSheetGapIsSeparatedByItsNormals) {
       nearest = std::min(nearest, field.point_distance_mm[i]);
     return nearest;
   };
+  // Points alone: the grid's cells reach the torso straight across the air;
+  // the point field (point_field.h) refuses chords that steep but still
+  // crosses somewhere (the limit: no test here can tell the sheets apart).
+  CloudGeodesicsOptions cells_only;
+  cells_only.point_field.enabled = false;
+  CloudGeodesics grid_only(cells_only, cloud);
+  ASSERT_GT(grid_only.grid().sheet_gap_mm(), gap);
+  EXPECT_LT(to_torso(grid_only), 2 * gap);  // through the air
   CloudGeodesics points_only({}, cloud);
-  ASSERT_GT(points_only.grid().sheet_gap_mm(), gap);
-  EXPECT_LT(to_torso(points_only), 2 * gap);  // through the air
+  EXPECT_TRUE(std::isfinite(to_torso(points_only)));
 
   CloudGeodesics oriented({}, cloud, normals);
   EXPECT_TRUE(oriented.grid().oriented());
@@ -165,7 +172,7 @@ TEST(NearSurfaces, ArmCloserThanTheSheetGapIsSeparatedByItsNormals) {
   ignore.grid.use_normals = false;
   CloudGeodesics ignored(ignore, cloud, normals);
   EXPECT_FALSE(ignored.grid().oriented());
-  EXPECT_LT(to_torso(ignored), 2 * gap);
+  EXPECT_TRUE(std::isfinite(to_torso(ignored)));
 }
 
 // Two unconnected plates 15 mm apart (within the 24 mm a query point may lie

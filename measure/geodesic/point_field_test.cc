@@ -1,0 +1,111 @@
+// The per-point distance field (point_field.h) against known answers.
+#include "measure/geodesic/point_field.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "measure/geodesic/cloud_geodesics.h"
+#include "measure/geodesic/testing/sampled_surfaces.h"
+#include "scanners/core/errors.h"
+
+namespace bespoke {
+namespace {
+
+struct Errors {
+  double mean = 0, worst = 0;  // relative, over the reached points
+  int counted = 0, unreached = 0;
+};
+
+// Over the points at least 10 mm from the source with a known `exact(x)`
+// (negative: not counted).
+template <typename Exact>
+Errors FieldErrors(const Eigen::MatrixX3d& cloud, const Eigen::VectorXd& field, Exact exact) {
+  Errors e;
+  for (Eigen::Index i = 0; i < cloud.rows(); ++i) {
+    const double truth = exact(Eigen::Vector3d(cloud.row(i).transpose()));
+    if (truth < 10) continue;
+    if (!std::isfinite(field[i])) {
+      ++e.unreached;
+      continue;
+    }
+    const double relative = std::abs(field[i] - truth) / truth;
+    e.mean += relative;
+    e.worst = std::max(e.worst, relative);
+    ++e.counted;
+  }
+  if (e.counted > 0) e.mean /= e.counted;
+  return e;
+}
+
+// On a plane the sweep's segment offers follow the circular wavefront: a
+// graph's edges alone would zig-zag several per cent long.
+TEST(PointField, PlaneDistancesAreEuclidean) {
+  const Eigen::MatrixX3d cloud = testing::SamplePlane({2.0, 0.0, 31}, 80);
+  const CloudGrid grid({}, cloud);
+  const int source = grid.index().Nearest(Eigen::Vector3d::Zero());
+  const Eigen::Vector3d s = grid.index().point(source);
+  const Eigen::VectorXd d = PointDistanceField({}, grid, {{source, 0.0}});
+  const Errors e = FieldErrors(cloud, d, [&](const Eigen::Vector3d& x) { return (x - s).norm(); });
+  std::printf("plane: %d points, mean %.3f %%, max %.3f %%\n", e.counted, 100 * e.mean,
+              100 * e.worst);
+  EXPECT_GT(e.counted, 5000);
+  EXPECT_EQ(e.unreached, 0);
+  EXPECT_LT(e.mean, 0.005);
+  EXPECT_LT(e.worst, 0.02);
+}
+
+// A sheet folded round a tube of radius 7.5 mm, on 8 mm cells: the grid's
+// links do not make it round a fold tighter than a cell (the upper plate is
+// a separate piece, unreached), while chords between neighbouring points do.
+// Exact distances from (x1, 0, 0) on the lower plate: sqrt((x - x1)^2 + y^2)
+// there, and on the upper plate, unrolled, sqrt((x1 + pi gap / 2 + x)^2 + y^2).
+TEST(PointField, ResolvesAFoldTighterThanACell) {
+  const double gap = 15, x1 = 60;
+  const Eigen::MatrixX3d cloud = testing::SampleFold({2.0, 0.0, 41}, gap, 120, 60);
+  const auto exact = [&](const Eigen::Vector3d& x) {
+    if (x.x() < 0) return -1.0;  // on the tube: not counted
+    return x.z() < gap / 2 ? std::hypot(x.x() - x1, x.y())
+                           : std::hypot(x1 + M_PI * gap / 2 + x.x(), x.y());
+  };
+  CloudGeodesicsOptions options;
+  options.grid.cell_size_mm = 8;
+  CloudGeodesicsOptions cells_only = options;
+  cells_only.point_field.enabled = false;
+  Errors e[2];
+  for (int k = 0; k < 2; ++k) {
+    CloudGeodesics geodesics(k == 0 ? cells_only : options, cloud);
+    const CloudDistanceField field = geodesics.DistancesFrom(Eigen::Vector3d(x1, 0, 0));
+    e[k] = FieldErrors(cloud, field.point_distance_mm, exact);
+    std::printf("fold, %s: mean %.3f %%, max %.3f %% over %d points, %d unreached\n",
+                k == 0 ? "cells only" : "point field", 100 * e[k].mean, 100 * e[k].worst,
+                e[k].counted, e[k].unreached);
+  }
+  EXPECT_GT(e[0].unreached, 1000);  // the limit of cells alone
+  EXPECT_EQ(e[1].unreached, 0);
+  EXPECT_LT(e[1].mean, 0.005);
+  EXPECT_LT(e[1].worst, 0.03);
+}
+
+TEST(PointField, BadOptionsAndSeedsAreInputErrors) {
+  const CloudGrid grid({}, testing::SamplePlane({2.0, 0.0, 32}, 20));
+  PointFieldOptions options;
+  options.neighbours = 1;
+  EXPECT_THROW(PointDistanceField(options, grid, {{0, 0.0}}), InputError);
+  options = {};
+  options.max_chord_angle_deg = 0;
+  EXPECT_THROW(PointDistanceField(options, grid, {{0, 0.0}}), InputError);
+  options = {};
+  options.agree_fraction = 1;
+  EXPECT_THROW(options.Check(), InputError);
+  options = {};
+  options.seed_radius_cells = -1;
+  EXPECT_THROW(options.Check(), InputError);
+  EXPECT_THROW(PointDistanceField({}, grid, {{-1, 0.0}}), InputError);
+  EXPECT_THROW(PointDistanceField({}, grid, {{0, std::nan("")}}), InputError);
+  EXPECT_THROW(PointDistanceField({}, grid, {{0, -1.0}}), InputError);
+}
+
+}  // namespace
+}  // namespace bespoke
