@@ -42,6 +42,7 @@ struct GeodesicCommandOptions {
   int window = 30;                  // flow window, samples
   bool whole_path = false;          // flow whole paths (Algorithm 2 on the grid)
   bool use_normals = false;         // use the scan's normals (must face outwards consistently)
+  bool cells_only = false;          // field: each point its grid node's distance (the thesis)
 
   void Check() const {
     if (from.empty()) throw InputError("--from is required");
@@ -88,7 +89,8 @@ nlohmann::json Settings(const GeodesicCommandOptions& o, const CloudGrid& grid) 
           {"oriented_normals", grid.oriented()},
           {"point_spacing_mm", grid.spacing_mm()},   {"window", o.window},
           {"whole_path", o.whole_path},              {"cells", grid.num_cells()},
-          {"nodes", grid.num_nodes()},               {"links", grid.num_links()}};
+          {"nodes", grid.num_nodes()},               {"links", grid.num_links()},
+          {"point_field", !o.cells_only}};
 }
 
 int Run(const GeodesicCommandOptions& o, const GlobalOptions& global) {
@@ -104,6 +106,7 @@ int Run(const GeodesicCommandOptions& o, const GlobalOptions& global) {
   options.propagation.window = o.window;
   options.propagation.whole_path = o.whole_path;
   options.grid.use_normals = o.use_normals;
+  options.point_field.enabled = !o.cells_only;
   ProgressBar progress(global.quiet);
   const auto start = std::chrono::steady_clock::now();
   if (o.use_normals && !scan.cloud.has_normals())
@@ -191,6 +194,9 @@ CommandRunner SetupGeodesicCommand(CLI::App& app) {
   app.add_flag("--use-normals", o->use_normals,
                "Use the scan's normals: surfaces facing opposite ways are never joined (the "
                "normals must face outwards consistently; wrongly turned patches cut the surface)");
+  app.add_flag("--cells-only", o->cells_only,
+               "Field: give each point its grid cell's distance (the thesis's cells alone) "
+               "instead of the per-point sweep");
   return [o](const GlobalOptions& global) { return Run(*o, global); };
 }
 

@@ -148,6 +148,21 @@ TEST_F(GeodesicCli, FieldOutWritesADistancePerScanPoint) {
   // At the scan point nearest the back waist: the back length, up to that
   // point's distance from the datum point.
   EXPECT_NEAR(d[near_to], exact_mm_, 5.0 + (field.cloud.points.row(near_to).transpose() - to_).norm());
+
+  // --cells-only: the grid cells' distances alone (the thesis), said in the report.
+  const CommandResult cells =
+      Run("geodesic " + Q(ScanFile()) + " --units mm --from " + Xyz(from_) + " --cells-only" +
+          " --field-out " + Q(out / "cells.ply") + " --report " + Q(out / "cells.json"));
+  ASSERT_EQ(cells.exit_code, 0) << cells.err;
+  EXPECT_FALSE(ReadJsonFile(out / "cells.json")["settings"]["point_field"].get<bool>());
+  const Eigen::VectorXd cell_d = ReadScan(read, out / "cells.ply").cloud.scalars.at("distance_mm");
+  ASSERT_EQ(cell_d.size(), d.size());
+  EXPECT_NEAR(cell_d[near_to], exact_mm_,
+              5.0 + (field.cloud.points.row(near_to).transpose() - to_).norm());
+  Eigen::Index differ = 0;  // a different field
+  for (Eigen::Index i = 0; i < d.size(); ++i)
+    differ += std::isfinite(d[i]) && std::isfinite(cell_d[i]) && cell_d[i] != d[i];
+  EXPECT_GT(differ, 0);
 }
 
 TEST_F(GeodesicCli, BadCoordinatesExitOneWithAClearMessageAndNoOutput) {
