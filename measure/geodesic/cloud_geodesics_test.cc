@@ -172,30 +172,14 @@ TEST(CloudGeodesics, PointsInAnUnscannedHoleAreReachedAcrossIt) {
 // the sphere of radius r (mm) about the origin, over the points at least 10 mm
 // from the source (exact: the great circle to the point's projection on the
 // sphere). `unreached`: points without a distance.
-struct FieldErrors {
-  double mean = 0, worst = 0;
-  int counted = 0, unreached = 0;
-};
+using testing::FieldErrors;
 FieldErrors SphereFieldErrors(const Eigen::MatrixX3d& cloud, double r,
                               const Eigen::Vector3d& source) {
   CloudGeodesics geodesics({}, cloud);
   const CloudDistanceField field = geodesics.DistancesFrom(source);
-  FieldErrors e;
-  for (Eigen::Index i = 0; i < cloud.rows(); ++i) {
-    if (!std::isfinite(field.point_distance_mm[i])) {
-      ++e.unreached;
-      continue;
-    }
-    const double exact =
-        testing::SphereDistance(r, source, r * cloud.row(i).transpose().normalized());
-    if (exact < 10) continue;
-    const double relative = std::abs(field.point_distance_mm[i] - exact) / exact;
-    e.mean += relative;
-    e.worst = std::max(e.worst, relative);
-    ++e.counted;
-  }
-  if (e.counted > 0) e.mean /= e.counted;
-  return e;
+  return testing::CompareField(cloud, field.point_distance_mm, [&](const Eigen::Vector3d& x) {
+    return testing::SphereDistance(r, source, r * x.normalized());
+  });
 }
 
 TEST(CloudGeodesics, DistanceFieldOnTheSphere) {

@@ -13,31 +13,8 @@
 namespace bespoke {
 namespace {
 
-struct Errors {
-  double mean = 0, worst = 0;  // relative, over the reached points
-  int counted = 0, unreached = 0;
-};
-
-// Over the points at least 10 mm from the source with a known `exact(x)`
-// (negative: not counted).
-template <typename Exact>
-Errors FieldErrors(const Eigen::MatrixX3d& cloud, const Eigen::VectorXd& field, Exact exact) {
-  Errors e;
-  for (Eigen::Index i = 0; i < cloud.rows(); ++i) {
-    const double truth = exact(Eigen::Vector3d(cloud.row(i).transpose()));
-    if (truth < 10) continue;
-    if (!std::isfinite(field[i])) {
-      ++e.unreached;
-      continue;
-    }
-    const double relative = std::abs(field[i] - truth) / truth;
-    e.mean += relative;
-    e.worst = std::max(e.worst, relative);
-    ++e.counted;
-  }
-  if (e.counted > 0) e.mean /= e.counted;
-  return e;
-}
+using testing::CompareField;
+using testing::FieldErrors;
 
 // On a plane the sweep's segment offers follow the circular wavefront: a
 // graph's edges alone would zig-zag several per cent long.
@@ -47,7 +24,8 @@ TEST(PointField, PlaneDistancesAreEuclidean) {
   const int source = grid.index().Nearest(Eigen::Vector3d::Zero());
   const Eigen::Vector3d s = grid.index().point(source);
   const Eigen::VectorXd d = PointDistanceField({}, grid, {{source, 0.0}});
-  const Errors e = FieldErrors(cloud, d, [&](const Eigen::Vector3d& x) { return (x - s).norm(); });
+  const FieldErrors e =
+      CompareField(cloud, d, [&](const Eigen::Vector3d& x) { return (x - s).norm(); });
   std::printf("plane: %d points, mean %.3f %%, max %.3f %%\n", e.counted, 100 * e.mean,
               100 * e.worst);
   EXPECT_GT(e.counted, 5000);
@@ -73,11 +51,11 @@ TEST(PointField, ResolvesAFoldTighterThanACell) {
   options.grid.cell_size_mm = 8;
   CloudGeodesicsOptions cells_only = options;
   cells_only.point_field.enabled = false;
-  Errors e[2];
+  FieldErrors e[2];
   for (int k = 0; k < 2; ++k) {
     CloudGeodesics geodesics(k == 0 ? cells_only : options, cloud);
     const CloudDistanceField field = geodesics.DistancesFrom(Eigen::Vector3d(x1, 0, 0));
-    e[k] = FieldErrors(cloud, field.point_distance_mm, exact);
+    e[k] = CompareField(cloud, field.point_distance_mm, exact);
     std::printf("fold, %s: mean %.3f %%, max %.3f %% over %d points, %d unreached\n",
                 k == 0 ? "cells only" : "point field", 100 * e[k].mean, 100 * e[k].worst,
                 e[k].counted, e[k].unreached);

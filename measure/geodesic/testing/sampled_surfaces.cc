@@ -121,4 +121,23 @@ double CylinderDistance(double r, double theta_a, double z_a, double theta_b, do
   return std::hypot(r * d, z_b - z_a);
 }
 
+FieldErrors CompareField(const Eigen::MatrixX3d& cloud, const Eigen::VectorXd& field,
+                         const std::function<double(const Eigen::Vector3d&)>& exact) {
+  FieldErrors e;
+  for (Eigen::Index i = 0; i < cloud.rows(); ++i) {
+    if (!std::isfinite(field[i])) {
+      ++e.unreached;
+      continue;
+    }
+    const double truth = exact(cloud.row(i).transpose());
+    if (truth < 10) continue;
+    const double relative = std::abs(field[i] - truth) / truth;
+    e.mean += relative;
+    e.worst = std::max(e.worst, relative);
+    ++e.counted;
+  }
+  if (e.counted > 0) e.mean /= e.counted;
+  return e;
+}
+
 }  // namespace bespoke::testing

@@ -7,6 +7,7 @@
 #define BESPOKE_MEASURE_GEODESIC_TESTING_SAMPLED_SURFACES_H_
 
 #include <cstdint>
+#include <functional>
 
 #include "scanners/core/types.h"
 
@@ -40,6 +41,16 @@ Eigen::MatrixX3d Concatenate(const Eigen::MatrixX3d& a, const Eigen::MatrixX3d& 
 double SphereDistance(double r, const Eigen::Vector3d& a, const Eigen::Vector3d& b);
 // Points given by (angle rad, z); the shorter way round.
 double CylinderDistance(double r, double theta_a, double z_a, double theta_b, double z_b);
+
+// Relative errors of a distance field (#P, mm, +inf unreached) against
+// `exact(x)` (mm) over the points at least 10 mm from the source (and with
+// exact >= 0: negative means "not counted"); unreached points counted apart.
+struct FieldErrors {
+  double mean = 0, worst = 0;
+  int counted = 0, unreached = 0;
+};
+FieldErrors CompareField(const Eigen::MatrixX3d& cloud, const Eigen::VectorXd& field,
+                         const std::function<double(const Eigen::Vector3d&)>& exact);
 
 }  // namespace bespoke::testing
 
