@@ -241,8 +241,12 @@ Eigen::VectorXd CloudGeodesics::DistancesAt(const Eigen::MatrixX3d& points) {
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
     const Eigen::Vector3d x = points.row(i).transpose();
     if (!x.allFinite()) continue;
-    // Prefer the source's piece of the scan over a small unreached island.
-    const int q = grid_.LocatePoint(x, nullptr, component);
+    // The nearest scan point if reached (the point field reaches pieces the
+    // grid's links do not join, e.g. a cavity behind knife-edged lips),
+    // else the nearest on the source's piece (skipping a small unreached
+    // island).
+    int q = grid_.LocatePoint(x);
+    if (!std::isfinite(field_distance_[q])) q = grid_.LocatePoint(x, nullptr, component);
     const int node = grid_.node_of_point(q);
     const Eigen::Vector3d xq = grid_.index().point(q);
     const double change = cached_->DistanceNear(node, x) - cached_->DistanceNear(node, xq);

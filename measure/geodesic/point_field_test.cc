@@ -61,6 +61,13 @@ TEST(PointField, ResolvesAFoldTighterThanACell) {
                 e[k].counted, e[k].unreached);
   }
   EXPECT_GT(e[0].unreached, 1000);  // the limit of cells alone
+  // The field at the scan's own points is the same through DistancesAt, also
+  // beyond the fold, which the grid's links leave a separate piece.
+  CloudGeodesics geodesics(options, cloud);
+  const Eigen::VectorXd own = geodesics.DistancesFrom(Eigen::Vector3d(x1, 0, 0)).point_distance_mm;
+  const Eigen::VectorXd at = geodesics.DistancesAt(cloud);
+  ASSERT_GT(geodesics.grid().component_points().size(), 1u);
+  for (Eigen::Index i = 0; i < cloud.rows(); ++i) ASSERT_EQ(at[i], own[i]) << cloud.row(i);
   EXPECT_EQ(e[1].unreached, 0);
   EXPECT_LT(e[1].mean, 0.005);
   EXPECT_LT(e[1].worst, 0.03);
