@@ -213,10 +213,14 @@ void CloudGeodesics::SweepPoints(const Eigen::Vector3d& point, const std::vector
   std::vector<double> d2;
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
     const double cells = field_distance_[i];
-    if (std::isfinite(swept[i]) || !std::isfinite(cells)) {
-      const double tolerance = options_.point_field.agree_fraction * swept[i];
-      const bool agree = std::abs(swept[i] - cells) <= tolerance;
-      field_distance_[i] = agree ? cells : swept[i];
+    if (!std::isfinite(cells)) {  // unreached by the grid: the sweep's (maybe +inf too)
+      field_distance_[i] = swept[i];
+      continue;
+    }
+    if (std::isfinite(swept[i])) {
+      const bool agree =
+          std::abs(swept[i] - cells) <= options_.point_field.agree_fraction * swept[i];
+      if (!agree) field_distance_[i] = swept[i];
       continue;
     }
     const Eigen::Vector3d x = points.row(i).transpose();

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 
@@ -99,13 +100,18 @@ TEST(NearSurfaces, ArmBesideTorsoStaysSeparate) {
   }
 }
 
+// Two 120 mm square plates sampled every 2 mm, z = 0 (seed `lower_seed`) and
+// z = gap (seed `upper_seed`), not connected.
+Eigen::MatrixX3d TwoPlates(double gap_mm, std::uint32_t upper_seed, std::uint32_t lower_seed) {
+  Eigen::MatrixX3d upper = testing::SamplePlane({2.0, 0.0, upper_seed}, 60);
+  upper.col(2).array() += gap_mm;
+  return testing::Concatenate(testing::SamplePlane({2.0, 0.0, lower_seed}, 60), upper);
+}
+
 // Two parallel plates 12 mm apart: every cell that straddles both holds two
 // nodes, one per sheet, and no link joins them.
 TEST(NearSurfaces, CellsHoldOneNodePerSheet) {
-  Eigen::MatrixX3d upper = testing::SamplePlane({2.0, 0.0, 41}, 60);
-  upper.col(2).array() += 12;
-  const Eigen::MatrixX3d cloud =
-      testing::Concatenate(testing::SamplePlane({2.0, 0.0, 42}, 60), upper);
+  const Eigen::MatrixX3d cloud = TwoPlates(12, 41, 42);
   CloudGridOptions options;
   options.cell_size_mm = 20;  // large cells, so each holds both plates
   const CloudGrid grid(options, cloud);
@@ -179,10 +185,7 @@ TEST(NearSurfaces, ArmCloserThanTheSheetGapIsSeparatedByItsNormals) {
 // off the scan): a path from one to the other is an input error naming the
 // two pieces, never the 0 mm of snapping the target onto the source's plate.
 TEST(NearSurfaces, PointsOnSeparatePlatesHaveNoPath) {
-  Eigen::MatrixX3d upper = testing::SamplePlane({2.0, 0.0, 71}, 60);
-  upper.col(2).array() += 15;
-  const Eigen::MatrixX3d cloud =
-      testing::Concatenate(testing::SamplePlane({2.0, 0.0, 72}, 60), upper);
+  const Eigen::MatrixX3d cloud = TwoPlates(15, 71, 72);
   CloudGeodesicsOptions options;
   options.grid.cell_size_mm = 8;
   CloudGeodesics geodesics(options, cloud);
