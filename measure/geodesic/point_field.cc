@@ -7,6 +7,7 @@
 #include <queue>
 #include <utility>
 
+#include "measure/geodesic/local_surface.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
@@ -16,6 +17,8 @@ void PointFieldOptions::Check() const {
     throw InputError("geodesics: point field neighbours must be in [2, 64]");
   if (!(max_chord_angle_deg > 0 && max_chord_angle_deg <= 90))
     throw InputError("geodesics: point field max_chord_angle_deg must be in (0, 90]");
+  if (fit_points != 0 && (fit_points < 10 || fit_points > 256))
+    throw InputError("geodesics: point field fit_points must be 0 or in [10, 256]");
   if (!(seed_radius_cells >= 0) || !std::isfinite(seed_radius_cells))
     throw InputError("geodesics: point field seed_radius_cells must be >= 0");
   if (!(agree_fraction >= 0 && agree_fraction < 1))
@@ -41,25 +44,63 @@ double SegmentOffer(const Eigen::Vector3d& a, double da, const Eigen::Vector3d& 
   return da + slope * along + across * root;
 }
 
-// Each scan point as the distance sweep sees it: moved onto its node's
-// fitted surface (when `project`, which removes scan noise from the chord
-// lengths) and its unit normal (the given oriented one, else the surface's).
+// Each scan point as the distance sweep sees it: its k nearest points (itself
+// first), and its foot and unit normal on a surface fitted to its own
+// nearest points (the given oriented normal when there is one). The fit uses
+// the `fit_points` nearest that lie in the point's node or a node linked to
+// it (not another sheet), as a quadric through their PCA plane; with fewer
+// than 10 of them, the node's surface. Node surfaces span a cell: on coarse
+// cells they blur what lies within one (a toe, the mouth's inside behind the
+// lips), and a point projected onto them lands on the wrong sheet.
 struct Surfels {
   std::vector<Eigen::Vector3d> position, normal;
+  std::vector<int> near;  // #P x k row-major, nearest first
+  int k = 0;
+  const int* near_begin(Eigen::Index i) const { return near.data() + i * k; }
 };
 
-Surfels MakeSurfels(const CloudGrid& grid, bool project) {
+TangentPlane PointPlane(const CloudGrid& grid, int node, const Eigen::Vector3d& x,
+                        const std::vector<int>& near, int fit_points) {
+  const TangentPlane cell = grid.surface(node).PlaneAt(x);
+  Eigen::MatrixX3d pts(std::min<Eigen::Index>(fit_points, near.size()), 3);
+  Eigen::Index m = 0;
+  for (size_t j = 0; j < near.size() && m < pts.rows(); ++j)
+    if (grid.WithinHops(node, grid.node_of_point(near[j]), 1))
+      pts.row(m++) = grid.index().point(near[j]);
+  if (m < 10) return cell;
+  const Eigen::MatrixX3d kept = pts.topRows(m);
+  LocalSurface seed = PcaPlane(kept);
+  if (seed.normal().dot(cell.normal) < 0) seed.frame.col(1) *= -1, seed.frame.col(2) *= -1;
+  return FitLocalSurface(SurfaceFit::kQuadric, kept, seed, 0.5 * grid.sheet_gap_mm()).PlaneAt(x);
+}
+
+Surfels MakeSurfels(const PointFieldOptions& options, const CloudGrid& grid) {
   const Eigen::Index n = grid.index().size();
-  Surfels s{std::vector<Eigen::Vector3d>(static_cast<size_t>(n)),
-            std::vector<Eigen::Vector3d>(static_cast<size_t>(n))};
+  Surfels s;
+  s.k = static_cast<int>(std::min<Eigen::Index>(options.neighbours + 1, n));
+  s.position.resize(static_cast<size_t>(n));
+  s.normal.resize(static_cast<size_t>(n));
+  s.near.assign(static_cast<size_t>(n * s.k), -1);
   const bool given = grid.point_normals().rows() > 0;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Eigen::Vector3d x = grid.index().point(i);
-    const TangentPlane plane = grid.surface(grid.node_of_point(i)).PlaneAt(x);
-    s.position[static_cast<size_t>(i)] = project ? plane.point : x;
-    s.normal[static_cast<size_t>(i)] = given && grid.point_normals().row(i).squaredNorm() > 0
-                                           ? Eigen::Vector3d(grid.point_normals().row(i))
-                                           : plane.normal.normalized();
+  const int query = std::max(s.k, options.fit_points);
+#pragma omp parallel
+  {
+    std::vector<int> near;
+    std::vector<double> d2;
+#pragma omp for schedule(dynamic, 256)
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const Eigen::Vector3d x = grid.index().point(i);
+      grid.index().Knn(x, query, &near, &d2);
+      std::copy_n(near.begin(), std::min<size_t>(s.k, near.size()), s.near.begin() + i * s.k);
+      const int node = grid.node_of_point(i);
+      const TangentPlane plane = options.fit_points > 0
+                                     ? PointPlane(grid, node, x, near, options.fit_points)
+                                     : grid.surface(node).PlaneAt(x);
+      s.position[static_cast<size_t>(i)] = options.project_to_surface ? plane.point : x;
+      s.normal[static_cast<size_t>(i)] = given && grid.point_normals().row(i).squaredNorm() > 0
+                                             ? Eigen::Vector3d(grid.point_normals().row(i))
+                                             : plane.normal.normalized();
+    }
   }
   return s;
 }
@@ -106,24 +147,26 @@ Eigen::VectorXd PointDistanceField(const PointFieldOptions& options, const Cloud
       queue.emplace(seed.distance_mm, seed.point);
     }
   }
-  const Surfels surfels = MakeSurfels(grid, options.project_to_surface);
+  const Surfels surfels = MakeSurfels(options, grid);
   const double sin_max = std::sin(options.max_chord_angle_deg * M_PI / 180);
   std::vector<char> done(static_cast<size_t>(n), 0);
-  std::vector<int> near, settled;
-  std::vector<double> d2;
+  std::vector<int> settled;
   while (!queue.empty()) {
     const auto [dp, p] = queue.top();
     queue.pop();
     if (done[static_cast<size_t>(p)] || dp > d[p]) continue;  // stale entry
     done[static_cast<size_t>(p)] = 1;
     const Eigen::Vector3d& xp = surfels.position[static_cast<size_t>(p)];
-    index.Knn(index.point(p), options.neighbours + 1, &near, &d2);
+    const int* near = surfels.near_begin(p);
     settled.clear();
-    for (const int r : near)
-      if (r != p && done[static_cast<size_t>(r)] && Join(grid, surfels, sin_max, p, r))
+    for (int j = 0; j < surfels.k; ++j) {
+      const int r = near[j];
+      if (r >= 0 && r != p && done[static_cast<size_t>(r)] && Join(grid, surfels, sin_max, p, r))
         settled.push_back(r);
-    for (const int q : near) {
-      if (done[static_cast<size_t>(q)] || !Join(grid, surfels, sin_max, p, q)) continue;
+    }
+    for (int j = 0; j < surfels.k; ++j) {
+      const int q = near[j];
+      if (q < 0 || done[static_cast<size_t>(q)] || !Join(grid, surfels, sin_max, p, q)) continue;
       const Eigen::Vector3d& xq = surfels.position[static_cast<size_t>(q)];
       double offer = dp + (xq - xp).norm();
       for (const int r : settled)
