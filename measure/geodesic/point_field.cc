@@ -1,10 +1,15 @@
 #include "measure/geodesic/point_field.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
 #include <functional>
 #include <limits>
+#include <mutex>
 #include <queue>
+#include <system_error>
+#include <thread>
 #include <utility>
 
 #include "measure/geodesic/local_surface.h"
@@ -74,6 +79,26 @@ TangentPlane PointPlane(const CloudGrid& grid, int node, const Eigen::Vector3d& 
   return FitLocalSurface(SurfaceFit::kQuadric, kept, seed, 0.5 * grid.sheet_gap_mm()).PlaneAt(x);
 }
 
+// Point i's neighbour list, foot and normal; `near`, `d2`: scratch.
+void FillSurfel(const PointFieldOptions& options, const CloudGrid& grid, Eigen::Index i,
+                std::vector<int>* near, std::vector<double>* d2, Surfels* s) {
+  const Eigen::Vector3d x = grid.index().point(i);
+  grid.index().Knn(x, std::max(s->k, options.fit_points), near, d2);
+  std::copy_n(near->begin(), std::min<size_t>(s->k, near->size()), s->near.begin() + i * s->k);
+  const int node = grid.node_of_point(i);
+  const TangentPlane plane = options.fit_points > 0
+                                 ? PointPlane(grid, node, x, *near, options.fit_points)
+                                 : grid.surface(node).PlaneAt(x);
+  s->position[static_cast<size_t>(i)] = options.project_to_surface ? plane.point : x;
+  const bool given =
+      grid.point_normals().rows() > 0 && grid.point_normals().row(i).squaredNorm() > 0;
+  s->normal[static_cast<size_t>(i)] =
+      given ? Eigen::Vector3d(grid.point_normals().row(i)) : plane.normal.normalized();
+}
+
+// All points, in blocks over a few threads (std::thread, not OpenMP: a
+// process that forks after using OpenMP, like geodesic_bench's timed
+// children, deadlocks in the child's first parallel region).
 Surfels MakeSurfels(const PointFieldOptions& options, const CloudGrid& grid) {
   const Eigen::Index n = grid.index().size();
   Surfels s;
@@ -81,27 +106,32 @@ Surfels MakeSurfels(const PointFieldOptions& options, const CloudGrid& grid) {
   s.position.resize(static_cast<size_t>(n));
   s.normal.resize(static_cast<size_t>(n));
   s.near.assign(static_cast<size_t>(n * s.k), -1);
-  const bool given = grid.point_normals().rows() > 0;
-  const int query = std::max(s.k, options.fit_points);
-#pragma omp parallel
-  {
+  constexpr Eigen::Index kBlock = 1024;
+  std::atomic<Eigen::Index> next{0};
+  std::mutex failed_mutex;
+  std::exception_ptr failed;
+  const auto work = [&] {
     std::vector<int> near;
     std::vector<double> d2;
-#pragma omp for schedule(dynamic, 256)
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const Eigen::Vector3d x = grid.index().point(i);
-      grid.index().Knn(x, query, &near, &d2);
-      std::copy_n(near.begin(), std::min<size_t>(s.k, near.size()), s.near.begin() + i * s.k);
-      const int node = grid.node_of_point(i);
-      const TangentPlane plane = options.fit_points > 0
-                                     ? PointPlane(grid, node, x, near, options.fit_points)
-                                     : grid.surface(node).PlaneAt(x);
-      s.position[static_cast<size_t>(i)] = options.project_to_surface ? plane.point : x;
-      s.normal[static_cast<size_t>(i)] = given && grid.point_normals().row(i).squaredNorm() > 0
-                                             ? Eigen::Vector3d(grid.point_normals().row(i))
-                                             : plane.normal.normalized();
+    try {
+      for (Eigen::Index b; (b = next.fetch_add(kBlock)) < n;)
+        for (Eigen::Index i = b; i < std::min(n, b + kBlock); ++i)
+          FillSurfel(options, grid, i, &near, &d2, &s);
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(failed_mutex);
+      if (!failed) failed = std::current_exception();
+      next = n;  // the others stop at their next block
     }
+  };
+  std::vector<std::thread> pool;
+  const unsigned threads = std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
+  try {
+    for (unsigned t = 1; t < threads && n > 4 * kBlock; ++t) pool.emplace_back(work);
+  } catch (const std::system_error&) {  // no more threads: the ones started do it
   }
+  work();
+  for (std::thread& t : pool) t.join();
+  if (failed) std::rethrow_exception(failed);
   return s;
 }
 

@@ -45,9 +45,8 @@
 #ifndef BESPOKE_MEASURE_GEODESIC_POINT_FIELD_H_
 #define BESPOKE_MEASURE_GEODESIC_POINT_FIELD_H_
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 #include "measure/geodesic/cloud_grid.h"
 
@@ -83,12 +82,12 @@ struct PointFieldOptions {
   // sweep's is within this fraction of it, and takes the sweep's elsewhere.
   // Default 0.005; 0 = the sweep's everywhere.
   double agree_fraction = 0.005;
-  void Check() const;               // InputError when out of range
+  void Check() const;  // InputError when out of range
 };
 
 struct PointSeed {
-  int point = 0;             // index into the grid's points
-  double distance_mm = 0;    // its distance from the source
+  int point = 0;           // index into the grid's points
+  double distance_mm = 0;  // its distance from the source
 };
 
 // See the file comment.
