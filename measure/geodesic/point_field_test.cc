@@ -73,10 +73,44 @@ TEST(PointField, ResolvesAFoldTighterThanACell) {
   EXPECT_LT(e[1].worst, 0.03);
 }
 
+// A sheet folded round a 10 mm radius on 20 mm cells: a cell holds the fold
+// whole, and its node's quadric does not follow it. Points placed on their own
+// fits (24 nearest, `fit_points`) are; on the node surfaces (fit_points = 0)
+// points of the fold are carried to the wrong side of it. Exact distances as
+// in ResolvesAFoldTighterThanACell.
+TEST(PointField, OwnFitsFollowAFoldACellWide) {
+  const double gap = 20, x1 = 60;
+  const Eigen::MatrixX3d cloud = testing::SampleFold({2.0, 0.0, 41}, gap, 120, 60);
+  const auto exact = [&](const Eigen::Vector3d& x) {
+    if (x.x() < 0) return -1.0;
+    return x.z() < gap / 2 ? std::hypot(x.x() - x1, x.y())
+                           : std::hypot(x1 + M_PI * gap / 2 + x.x(), x.y());
+  };
+  FieldErrors e[2];
+  for (int k = 0; k < 2; ++k) {
+    CloudGeodesicsOptions options;
+    options.grid.cell_size_mm = 20;
+    if (k == 0) options.point_field.fit_points = 0;
+    CloudGeodesics geodesics(options, cloud);
+    e[k] = CompareField(cloud, geodesics.DistancesFrom(Eigen::Vector3d(x1, 0, 0)).point_distance_mm,
+                        exact);
+    std::printf("fold on 20 mm cells, %s: mean %.3f %%, max %.3f %%, %d unreached\n",
+                k == 0 ? "node surfaces" : "own fits", 100 * e[k].mean, 100 * e[k].worst,
+                e[k].unreached);
+  }
+  EXPECT_GT(e[0].worst, 0.03);  // what node surfaces give here
+  EXPECT_EQ(e[1].unreached, 0);
+  EXPECT_LT(e[1].mean, 0.005);
+  EXPECT_LT(e[1].worst, 0.02);
+}
+
 TEST(PointField, BadOptionsAndSeedsAreInputErrors) {
   const CloudGrid grid({}, testing::SamplePlane({2.0, 0.0, 32}, 20));
   PointFieldOptions options;
   options.neighbours = 1;
+  EXPECT_THROW(PointDistanceField(options, grid, {{0, 0.0}}), InputError);
+  options = {};
+  options.fit_points = 5;
   EXPECT_THROW(PointDistanceField(options, grid, {{0, 0.0}}), InputError);
   options = {};
   options.max_chord_angle_deg = 0;
