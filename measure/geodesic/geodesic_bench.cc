@@ -189,6 +189,16 @@ std::vector<double> CloudField(const CloudGeodesicsOptions& options, const Eigen
   return out;
 }
 
+// CloudField on a mesh's vertices as the cloud, from vertex 0, evaluated at
+// the vertices, in a child (InChild: peak memory, g_child_cpu_s).
+std::vector<double> VertexField(const CloudGeodesicsOptions& options,
+                                const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3d& normals,
+                                double* peak_mb) {
+  return InChild([&] {
+    return CloudField(options, vertices, normals, vertices.row(0).transpose(), vertices);
+  }, peak_mb);
+}
+
 // CGAL single source in a child: {seconds, d_0 .. d_{V-1}}.
 std::vector<double> ExactField(const TriangleMesh& mesh, const SurfacePoint& source) {
   const double t = Now();
@@ -236,26 +246,17 @@ Eigen::VectorXd MeshRow(const std::string& name, const TriangleMesh& mesh, bool 
                         const CloudGeodesicsOptions& options,
                         const std::vector<bool>* seen = nullptr) {
   double peak = 0, cgal_peak = 0;
-  const auto cloud = InChild([&] {
-    return CloudField(options, mesh.vertices, Eigen::MatrixX3d(0, 3),
-                      mesh.vertices.row(0).transpose(), mesh.vertices);
-  }, &peak);
+  const auto cloud = VertexField(options, mesh.vertices, Eigen::MatrixX3d(0, 3), &peak);
   const double cpu = g_child_cpu_s;
   double peak_n = 0;
   const Eigen::MatrixX3d normals = VertexNormals(mesh);  // the cloud's input, not timed
-  const auto with_normals = InChild([&] {
-    return CloudField(options, mesh.vertices, normals, mesh.vertices.row(0).transpose(),
-                      mesh.vertices);
-  }, &peak_n);
+  const auto with_normals = VertexField(options, mesh.vertices, normals, &peak_n);
   const double cpu_n = g_child_cpu_s;
   // The thesis's cells alone: each point takes its node's distance.
   CloudGeodesicsOptions cells_only = options;
   cells_only.point_field.enabled = false;
   double peak_c = 0;
-  const auto cells = InChild([&] {
-    return CloudField(cells_only, mesh.vertices, Eigen::MatrixX3d(0, 3),
-                      mesh.vertices.row(0).transpose(), mesh.vertices);
-  }, &peak_c);
+  const auto cells = VertexField(cells_only, mesh.vertices, Eigen::MatrixX3d(0, 3), &peak_c);
   const double cpu_c = g_child_cpu_s;
   Eigen::VectorXd exact = Eigen::VectorXd::Constant(mesh.num_vertices(), NAN);
   double cgal_s = 0, cgal_cpu = 0;
@@ -510,10 +511,7 @@ int Main(int argc, char** argv) {
       CloudGeodesicsOptions options;
       options.grid.auto_cell_spacings = spacings;
       double peak = 0;
-      const auto r = InChild([&] {
-        return CloudField(options, body.vertices, Eigen::MatrixX3d(0, 3),
-                          body.vertices.row(0).transpose(), body.vertices);
-      }, &peak);
+      const auto r = VertexField(options, body.vertices, Eigen::MatrixX3d(0, 3), &peak);
       PrintRow("cell " + std::to_string(static_cast<int>(spacings)) + " spacings",
                body.num_vertices(), r[2], r[0], r[1], g_child_cpu_s, peak, 0, 0, 0,
                Compare(Tail(r, 3), body_exact));
