@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "scanners/core/errors.h"
 
@@ -83,6 +84,74 @@ LocalSurface FitLocalSurface(SurfaceFit fit, const Eigen::MatrixX3d& points,
   const double s2 = scale * scale;
   s.coefficients << c[0] / s2, c[1] / s2, c[2] / s2, c[3] / scale, c[4] / scale, c[5];
   return s;
+}
+
+namespace {
+
+// Unit normal of the plane through points[0] and two of points[1 .. 7] that
+// minimises sum_j min(e_j^2, tan2) (see FitOwnSheet); zero if none is proper.
+Eigen::Vector3d MsacNormal(const Eigen::MatrixX3d& points, double tan2) {
+  const Eigen::Vector3d x = points.row(0).transpose();
+  const Eigen::Index first = std::min<Eigen::Index>(8, points.rows());
+  Eigen::Vector3d best_normal = Eigen::Vector3d::Zero();
+  double best = std::numeric_limits<double>::infinity();
+  for (Eigen::Index a = 1; a < first; ++a)
+    for (Eigen::Index b = a + 1; b < first; ++b) {
+      const Eigen::Vector3d u = points.row(a).transpose() - x, v = points.row(b).transpose() - x;
+      Eigen::Vector3d n = u.cross(v);
+      if (n.norm() < 0.3 * u.norm() * v.norm()) continue;  // nearly collinear: a poor plane
+      n.normalize();
+      double cost = 0;
+      for (Eigen::Index j = 1; j < points.rows() && cost < best; ++j) {
+        const Eigen::Vector3d w = points.row(j).transpose() - x;
+        const double h = n.dot(w);
+        cost += std::min(h * h / w.squaredNorm(), tan2);
+      }
+      if (cost < best) best = cost, best_normal = n;
+    }
+  return best_normal;
+}
+
+// Rows of `points` within the wedge: |n.(y - through)| <= tan |y - x|, x = row 0 (always kept).
+Eigen::MatrixX3d InWedge(const Eigen::MatrixX3d& points, const Eigen::Vector3d& n,
+                         const Eigen::Vector3d& through, double tan2) {
+  const Eigen::Vector3d x = points.row(0).transpose();
+  Eigen::MatrixX3d kept(points.rows(), 3);
+  Eigen::Index m = 0;
+  for (Eigen::Index j = 0; j < points.rows(); ++j) {
+    const double h = n.dot(points.row(j).transpose() - through);
+    if (j == 0 || h * h <= tan2 * (points.row(j).transpose() - x).squaredNorm())
+      kept.row(m++) = points.row(j);
+  }
+  return kept.topRows(m);
+}
+
+}  // namespace
+
+bool FitOwnSheet(const Eigen::MatrixX3d& points, double wedge_deg, double inlier_offset_mm,
+                 const Eigen::Vector3d& orient, LocalSurface* surface, double* rms_mm) {
+  if (points.rows() < 10) return false;
+  const double tan2 = std::pow(std::tan(wedge_deg * M_PI / 180), 2);
+  Eigen::MatrixX3d kept = points;
+  Eigen::Vector3d n = MsacNormal(points, tan2), through = points.row(0).transpose();
+  for (int round = 0; round < 2 && n.squaredNorm() > 0; ++round) {
+    const Eigen::MatrixX3d in = InWedge(points, n, through, tan2);
+    if (in.rows() < 10) break;  // too few on the sheet: all the points, as before
+    const LocalSurface plane = PcaPlane(in);
+    n = plane.normal(), through = plane.origin;
+    if (round == 1) kept = in;
+  }
+  LocalSurface seed = PcaPlane(kept);
+  if (seed.normal().dot(orient) < 0) seed.frame.col(1) *= -1, seed.frame.col(2) *= -1;
+  *surface = FitLocalSurface(SurfaceFit::kQuadric, kept, seed, inlier_offset_mm);
+  double sum = 0;
+  int counted = 0;
+  for (Eigen::Index j = 0; j < kept.rows(); ++j) {
+    const double offset = surface->Offset(kept.row(j).transpose());
+    if (std::abs(offset) <= inlier_offset_mm) sum += offset * offset, ++counted;
+  }
+  *rms_mm = counted > 0 ? std::sqrt(sum / counted) : 0;
+  return true;
 }
 
 bool KnnPlaneSource::PlaneAt(const Eigen::Vector3d& position, int* /*hint*/,

@@ -50,6 +50,26 @@ LocalSurface PcaPlane(const Eigen::MatrixX3d& points, double* planarity = nullpt
 LocalSurface FitLocalSurface(SurfaceFit fit, const Eigen::MatrixX3d& points,
                              const LocalSurface& seed, double inlier_offset_mm);
 
+// A surface through scan point x's neighbourhood that keeps to x's own sheet
+// when another lies among its nearest points (the two faces of a lip a few mm
+// apart, an arm by the torso). Not in the thesis, whose PCA plane of the d
+// nearest points tilts halfway between two such sheets (on the 116k
+// MakeHuman body's lips: normals 70 degrees off). A point belongs to x's sheet
+// when it lies within `wedge_deg` of x's tangent plane as seen from x:
+//   1. the plane through x and two of its 7 nearest points that minimises
+//      sum over the others of min(e^2, tan^2 wedge), e = |n.(y - x)| / |y - x|
+//      (MSAC; the other sheet's points cost the capped amount);
+//   2. twice: the points within the wedge (measured from the previous plane,
+//      which after the first round passes through its points' centroid, so
+//      x's own noise does not decide), and their PCA plane;
+//   3. a quadric (FitLocalSurface) through the points kept.
+// `points`: #K x 3 (mm), x's nearest with x itself in row 0. `surface`: the
+// fit, oriented like `orient` (a normal, any length). `rms_mm`: RMS offset of
+// the points kept from it. Falls back to all the points when the wedge keeps
+// fewer than 10; false (nothing written) when there are fewer than 10.
+bool FitOwnSheet(const Eigen::MatrixX3d& points, double wedge_deg, double inlier_offset_mm,
+                 const Eigen::Vector3d& orient, LocalSurface* surface, double* rms_mm);
+
 // The thesis's per-sample planes: PCA of the `neighbours` scan points nearest
 // the sample, through their centroid. Slow (a k-NN query per sample and
 // iteration) and blind to near-touching sheets; kept to compare against.
