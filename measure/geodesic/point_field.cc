@@ -24,6 +24,10 @@ void PointFieldOptions::Check() const {
     throw InputError("geodesics: point field max_chord_angle_deg must be in (0, 90]");
   if (fit_points != 0 && (fit_points < 10 || fit_points > 256))
     throw InputError("geodesics: point field fit_points must be 0 or in [10, 256]");
+  if (!(fit_wedge_deg >= 5 && fit_wedge_deg <= 60))
+    throw InputError("geodesics: point field fit_wedge_deg must be in [5, 60]");
+  if (!(surface_offset_fraction >= 0 && surface_offset_fraction <= 1))
+    throw InputError("geodesics: point field surface_offset_fraction must be in [0, 1]");
   if (!(seed_radius_cells >= 0) || !std::isfinite(seed_radius_cells))
     throw InputError("geodesics: point field seed_radius_cells must be >= 0");
   if (!(agree_fraction >= 0 && agree_fraction < 1))
@@ -51,49 +55,44 @@ double SegmentOffer(const Eigen::Vector3d& a, double da, const Eigen::Vector3d& 
 
 // Each scan point as the distance sweep sees it: its k nearest points (itself
 // first), and its foot and unit normal on a surface fitted to its own
-// nearest points (the given oriented normal when there is one). The fit uses
-// the `fit_points` nearest that lie in the point's node or a node linked to
-// it (not another sheet), as a quadric through their PCA plane; with fewer
-// than 10 of them, the node's surface. Node surfaces span a cell: on coarse
-// cells they blur what lies within one (a toe, the mouth's inside behind the
-// lips), and a point projected onto them lands on the wrong sheet.
+// nearest points (the given oriented normal when there is one), with that
+// surface and its RMS residual for the join test. The fit (FitOwnSheet) uses
+// the `fit_points` nearest, whatever node they lie in, and keeps to the
+// point's own sheet by geometry: a cell can straddle two sheets closer than
+// itself (the lips), so "in a node linked to the point's" picked the other
+// face. With fewer than 10 points, or fit_points = 0, the node's surface.
 struct Surfels {
   std::vector<Eigen::Vector3d> position, normal;
+  std::vector<LocalSurface> surface;  // empty when fit_points = 0
+  std::vector<double> rms_mm;         // of each fit; empty when fit_points = 0
   std::vector<int> near;  // #P x k row-major, nearest first
   int k = 0;
   const int* near_begin(Eigen::Index i) const { return near.data() + i * k; }
 };
 
-TangentPlane PointPlane(const CloudGrid& grid, int node, const Eigen::Vector3d& x,
-                        const std::vector<int>& near, int fit_points) {
-  const TangentPlane cell = grid.surface(node).PlaneAt(x);
-  Eigen::MatrixX3d pts(std::min<Eigen::Index>(fit_points, near.size()), 3);
-  Eigen::Index m = 0;
-  for (size_t j = 0; j < near.size() && m < pts.rows(); ++j)
-    if (grid.WithinHops(node, grid.node_of_point(near[j]), 1))
-      pts.row(m++) = grid.index().point(near[j]);
-  if (m < 10) return cell;
-  const Eigen::MatrixX3d kept = pts.topRows(m);
-  LocalSurface seed = PcaPlane(kept);
-  if (seed.normal().dot(cell.normal) < 0) seed.frame.col(1) *= -1, seed.frame.col(2) *= -1;
-  return FitLocalSurface(SurfaceFit::kQuadric, kept, seed, 0.5 * grid.sheet_gap_mm()).PlaneAt(x);
-}
-
-// Point i's neighbour list, foot and normal; `near`, `d2`: scratch.
+// Point i's neighbour list, fit, foot and normal; `near`, `d2`: scratch.
 void FillSurfel(const PointFieldOptions& options, const CloudGrid& grid, Eigen::Index i,
                 std::vector<int>* near, std::vector<double>* d2, Surfels* s) {
+  const size_t at = static_cast<size_t>(i);
   const Eigen::Vector3d x = grid.index().point(i);
   grid.index().Knn(x, std::max(s->k, options.fit_points), near, d2);
   std::copy_n(near->begin(), std::min<size_t>(s->k, near->size()), s->near.begin() + i * s->k);
-  const int node = grid.node_of_point(i);
-  const TangentPlane plane = options.fit_points > 0
-                                 ? PointPlane(grid, node, x, *near, options.fit_points)
-                                 : grid.surface(node).PlaneAt(x);
-  s->position[static_cast<size_t>(i)] = options.project_to_surface ? plane.point : x;
+  const LocalSurface& cell = grid.surface(grid.node_of_point(i));
+  TangentPlane plane = cell.PlaneAt(x);
+  if (options.fit_points > 0) {
+    const Eigen::Index m = std::min<Eigen::Index>(options.fit_points, near->size());
+    Eigen::MatrixX3d pts(m, 3);
+    for (Eigen::Index j = 0; j < m; ++j) pts.row(j) = grid.index().point((*near)[j]);
+    if (FitOwnSheet(pts, options.fit_wedge_deg, 0.5 * grid.sheet_gap_mm(), plane.normal,
+                    &s->surface[at], &s->rms_mm[at]))
+      plane = s->surface[at].PlaneAt(x);
+    else
+      s->surface[at] = cell, s->rms_mm[at] = 0;
+  }
+  s->position[at] = options.project_to_surface ? plane.point : x;
   const bool given =
       grid.point_normals().rows() > 0 && grid.point_normals().row(i).squaredNorm() > 0;
-  s->normal[static_cast<size_t>(i)] =
-      given ? Eigen::Vector3d(grid.point_normals().row(i)) : plane.normal.normalized();
+  s->normal[at] = given ? Eigen::Vector3d(grid.point_normals().row(i)) : plane.normal.normalized();
 }
 
 // All points, in blocks over a few threads (std::thread, not OpenMP: a
@@ -105,6 +104,10 @@ Surfels MakeSurfels(const PointFieldOptions& options, const CloudGrid& grid) {
   s.k = static_cast<int>(std::min<Eigen::Index>(options.neighbours + 1, n));
   s.position.resize(static_cast<size_t>(n));
   s.normal.resize(static_cast<size_t>(n));
+  if (options.fit_points > 0) {
+    s.surface.resize(static_cast<size_t>(n));
+    s.rms_mm.resize(static_cast<size_t>(n));
+  }
   s.near.assign(static_cast<size_t>(n * s.k), -1);
   constexpr Eigen::Index kBlock = 1024;
   std::atomic<Eigen::Index> next{0};
@@ -135,22 +138,42 @@ Surfels MakeSurfels(const PointFieldOptions& options, const CloudGrid& grid) {
   return s;
 }
 
+struct JoinLimits {
+  double sin_max = 0;    // of the chord's angle to either tangent plane
+  double offset_mm = 0;  // OnOneSurface's tolerance before the fits' residuals
+};
+
 bool ChordAlongSurface(const Eigen::Vector3d& e, const Eigen::Vector3d& np,
                        const Eigen::Vector3d& nq, double sin_max) {
   const double limit = sin_max * e.norm();
   return std::abs(np.dot(e)) <= limit && std::abs(nq.dot(e)) <= limit;
 }
 
-// The chord test, then: with oriented normals, the two points' normals
-// within a right angle (points facing each other across a gap or back to
-// back across thin tissue are not joined); without, the grid's test that the
-// points' nodes lie on one surface (sheets apart by the sheet gap are not).
-bool Join(const CloudGrid& grid, const Surfels& s, double sin_max, int p, int q) {
+// One of p, q lies on the other's fitted surface: within `offset_mm` plus
+// three times that fit's RMS residual (the scan's noise). Two sheets closer
+// than the sheet gap that a chord still joins along both tangent planes
+// (the lips pressed together) are millimetres off each other's surfaces;
+// neighbours on one sheet a fraction of a millimetre.
+bool OnOneSurface(const CloudGrid& grid, const Surfels& s, double offset_mm, int p, int q) {
+  const auto on = [&](int a, int b) {
+    const size_t i = static_cast<size_t>(a);
+    return std::abs(s.surface[i].Offset(grid.index().point(b))) <= offset_mm + 3 * s.rms_mm[i];
+  };
+  return on(p, q) || on(q, p);
+}
+
+// The chord test and the surface test, then: with oriented normals, the two
+// points' normals within a right angle (points facing each other across a gap
+// or back to back across thin tissue are not joined); without, the grid's test
+// that the points' nodes lie on one surface (sheets apart by the sheet gap are
+// not).
+bool Join(const CloudGrid& grid, const Surfels& s, const JoinLimits& limits, int p, int q) {
   const Eigen::Vector3d& np = s.normal[static_cast<size_t>(p)];
   const Eigen::Vector3d& nq = s.normal[static_cast<size_t>(q)];
   if (!ChordAlongSurface(s.position[static_cast<size_t>(q)] - s.position[static_cast<size_t>(p)],
-                         np, nq, sin_max))
+                         np, nq, limits.sin_max))
     return false;
+  if (!s.surface.empty() && !OnOneSurface(grid, s, limits.offset_mm, p, q)) return false;
   if (grid.oriented() && grid.point_normals().row(p).squaredNorm() > 0 &&
       grid.point_normals().row(q).squaredNorm() > 0)
     return np.dot(nq) >= 0;
@@ -178,7 +201,8 @@ Eigen::VectorXd PointDistanceField(const PointFieldOptions& options, const Cloud
     }
   }
   const Surfels surfels = MakeSurfels(options, grid);
-  const double sin_max = std::sin(options.max_chord_angle_deg * M_PI / 180);
+  const JoinLimits limits{std::sin(options.max_chord_angle_deg * M_PI / 180),
+                          options.surface_offset_fraction * grid.sheet_gap_mm()};
   std::vector<char> done(static_cast<size_t>(n), 0);
   std::vector<int> settled;
   while (!queue.empty()) {
@@ -191,16 +215,16 @@ Eigen::VectorXd PointDistanceField(const PointFieldOptions& options, const Cloud
     settled.clear();
     for (int j = 0; j < surfels.k; ++j) {
       const int r = near[j];
-      if (r >= 0 && r != p && done[static_cast<size_t>(r)] && Join(grid, surfels, sin_max, p, r))
+      if (r >= 0 && r != p && done[static_cast<size_t>(r)] && Join(grid, surfels, limits, p, r))
         settled.push_back(r);
     }
     for (int j = 0; j < surfels.k; ++j) {
       const int q = near[j];
-      if (q < 0 || done[static_cast<size_t>(q)] || !Join(grid, surfels, sin_max, p, q)) continue;
+      if (q < 0 || done[static_cast<size_t>(q)] || !Join(grid, surfels, limits, p, q)) continue;
       const Eigen::Vector3d& xq = surfels.position[static_cast<size_t>(q)];
       double offer = dp + (xq - xp).norm();
       for (const int r : settled)
-        if (Join(grid, surfels, sin_max, r, q))
+        if (Join(grid, surfels, limits, r, q))
           offer = std::min(
               offer, SegmentOffer(xp, dp, surfels.position[static_cast<size_t>(r)], d[r], xq));
       if (offer < d[q]) {

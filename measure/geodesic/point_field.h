@@ -20,13 +20,16 @@
 // chord's shortcut on curved skin.
 //
 // Each point first gets its own tangent plane and foot: a quadric fitted to
-// its `fit_points` nearest points on its own sheet (its node and the nodes
-// linked to it). A node's surface spans a cell and blurs what lies within one
-// (a fold a cell wide; on coarse cells the mouth's inside behind the cheek).
+// those of its `fit_points` nearest points that lie on its own sheet, told
+// apart by geometry (FitOwnSheet, local_surface.h). A node's surface spans a
+// cell and blurs what lies within one (a fold a cell wide; on coarse cells
+// the mouth's inside behind the cheek), and a cell can hold two sheets.
 //
 // Surface, not air: p and q exchange only along a chord within
 // `max_chord_angle_deg` of both points' tangent planes (not through thin
-// tissue), and
+// tissue), when one of them lies on the other's fitted surface (within
+// `surface_offset_fraction` of the sheet gap plus 3 x the fit's RMS
+// residual), and
 //   - with oriented normals (CloudGrid built with them): when their normals
 //     are within a right angle, so two sheets facing each other across a gap
 //     (an arm by the torso, the lips) or back to back across thin tissue are
@@ -68,13 +71,23 @@ struct PointFieldOptions {
   // (fit_points) rather than the raw points: scan noise (0.5 mm on 1.5 mm spacing)
   // lengthens raw chords by several per cent. Default true.
   bool project_to_surface = true;
-  // Each point's tangent plane and foot come from a quadric fitted to its
-  // `fit_points` nearest points on its own sheet (its node and the nodes
-  // linked to it); 0 = its node's surface, fitted over a whole cell (on 6
+  // Each point's tangent plane and foot come from a quadric fitted to those
+  // of its `fit_points` nearest points that lie on its own sheet (within
+  // `fit_wedge_deg` of its tangent plane as seen from it; FitOwnSheet in
+  // local_surface.h). 0 = its node's surface, fitted over a whole cell (on 6
   // point-spacing cells the 116k body's max error was 16.5 % that way, the
-  // inside of the mouth reached through the cheek; 5.0 % with 24). 0 or
-  // 10-256; default 24.
+  // inside of the mouth reached through the cheek). 0 or 10-256; default 24.
   int fit_points = 24;
+  // Default 30. Smaller rejects more of a noisy sheet (the noisy spheres
+  // test, 0.5 mm noise on 1.5 mm spacing, seed 3: max 1.04 % at 30, 2.39 % at 25);
+  // larger lets a nearby sheet in (the 116k body: 2.44 % at 30, 2.60 % at 35;
+  // docs/geodesics.md). [5, 60].
+  double fit_wedge_deg = 30;
+  // p and q are joined only when one lies on the other's fitted surface within
+  // this fraction of the sheet gap plus 3 x that fit's RMS residual: two sheets
+  // closer than the sheet gap (the lips pressed together) are mm off each
+  // other's surfaces. Used with fit_points > 0; default 0.1; [0, 1].
+  double surface_offset_fraction = 0.1;
   // CloudGeodesics seeds the sweep with the grid's (Algorithm 5) distances of
   // the points within this many cell sizes of the source. Default 3.
   double seed_radius_cells = 3;

@@ -116,6 +116,14 @@ TEST(PointField, BadOptionsAndSeedsAreInputErrors) {
   options.max_chord_angle_deg = 0;
   EXPECT_THROW(PointDistanceField(options, grid, {{0, 0.0}}), InputError);
   options = {};
+  options.fit_wedge_deg = 2;
+  EXPECT_THROW(options.Check(), InputError);
+  options.fit_wedge_deg = std::nan("");
+  EXPECT_THROW(options.Check(), InputError);
+  options = {};
+  options.surface_offset_fraction = -0.1;
+  EXPECT_THROW(options.Check(), InputError);
+  options = {};
   options.agree_fraction = 1;
   EXPECT_THROW(options.Check(), InputError);
   options = {};
