@@ -2,15 +2,19 @@
 // (thesis Algorithms 4-5) against CGAL's exact geodesics, in one run.
 //
 //   build/measure/geodesic_bench [--shared DIR] [--no-cgal] [--quick] [--body-only] [--dump DIR]
+//                                [--fit-wedge-deg D] [--surface-offset-fraction F] [--fit-points N]
 //   (--body-only: the 116k body and generated-scan field rows alone; --dump DIR:
 //   per-vertex cloud and exact distances of those rows as DIR/<name>.txt, to
-//   see where the errors are)
+//   see where the errors are; the last three set the point field's options,
+//   point_field.h, for every row)
 //
 // Rows (each algorithm runs in a forked child so its peak memory is its own):
 //   - single source to all destinations on clouds made of the vertices of the
 //     meshes in ../shared/data/meshes (116k-vertex MakeHuman body, the 35k and
 //     109k bunnies; MakeHuman is in dm, the bunny in m: both converted to mm),
 //     source vertex 0, errors per vertex against CGAL from the same vertex;
+//   - the body's faces within 100 mm of the mouth, from the chin (the lips,
+//     closer together than the vertex spacing, seen from a near source);
 //   - the same on a generated scan (parametric body through the virtual
 //     scanner, 0.5 mm noise), source the back neck point, errors at the body
 //     mesh's vertices that the scan saw (within 3 mm of a scan point);
@@ -26,6 +30,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <set>
@@ -54,6 +59,10 @@ double Now() {
 // on the machine inflates wall times, much less CPU times.
 double g_child_cpu_s = 0;
 std::string g_dump;  // --dump DIR: per-vertex distances of the mesh rows
+// Every cloud row's options: the defaults, with the point-field settings
+// given on the command line (--fit-wedge-deg, --surface-offset-fraction,
+// --fit-points), to rerun the sensitivity figures in docs/geodesics.md.
+CloudGeodesicsOptions g_options;
 
 // Runs `work` in a child process; returns its numbers, and its peak resident
 // memory in MB through `peak_mb` (its CPU time in g_child_cpu_s).
@@ -326,6 +335,39 @@ TriangleMesh LoadMesh(const std::filesystem::path& file, LengthUnit unit) {
   return mesh.mesh;
 }
 
+// The faces of `mesh` with every vertex within `radius_mm` of `centre`, the
+// vertex nearest `source` renumbered 0 (MeshRow's source).
+TriangleMesh Patch(const TriangleMesh& mesh, const Eigen::Vector3d& centre, double radius_mm,
+                   const Eigen::Vector3d& source) {
+  Eigen::Index first = 0;
+  for (Eigen::Index v = 1; v < mesh.num_vertices(); ++v)
+    if ((mesh.vertices.row(v).transpose() - source).norm() <
+        (mesh.vertices.row(first).transpose() - source).norm())
+      first = v;
+  std::vector<int> renumber(static_cast<size_t>(mesh.num_vertices()), -1);
+  std::vector<Eigen::Index> kept = {first};
+  renumber[static_cast<size_t>(first)] = 0;
+  std::vector<Eigen::Vector3i> faces;
+  for (Eigen::Index f = 0; f < mesh.num_faces(); ++f) {
+    bool inside = true;
+    for (int k = 0; k < 3; ++k)
+      inside = inside && (mesh.vertices.row(mesh.faces(f, k)).transpose() - centre).norm() < radius_mm;
+    if (!inside) continue;
+    Eigen::Vector3i face;
+    for (int k = 0; k < 3; ++k) {
+      int& to = renumber[static_cast<size_t>(mesh.faces(f, k))];
+      if (to < 0) to = static_cast<int>(kept.size()), kept.push_back(mesh.faces(f, k));
+      face[k] = to;
+    }
+    faces.push_back(face);
+  }
+  TriangleMesh patch;
+  patch.vertices = mesh.vertices(kept, Eigen::all);
+  patch.faces.resize(static_cast<Eigen::Index>(faces.size()), 3);
+  for (size_t f = 0; f < faces.size(); ++f) patch.faces.row(static_cast<Eigen::Index>(f)) = faces[f];
+  return patch;
+}
+
 // Normals as a scanner's software estimates them: a plane through each point's
 // 16 nearest neighbours, turned to face the sensor that saw the point (the
 // side of the simulator's `sensor_facing` normal). #P x 3, unit.
@@ -371,13 +413,13 @@ void GeneratedScanRows(bool cgal, bool quick, bool field_only) {
   }
   double peak = 0, cgal_peak = 0, peak_n = 0;
   const auto field = InChild([&] {
-    return CloudField({}, cloud, Eigen::MatrixX3d(0, 3), PositionOf(body.mesh, source),
+    return CloudField(g_options, cloud, Eigen::MatrixX3d(0, 3), PositionOf(body.mesh, source),
                       body.mesh.vertices);
   }, &peak);
   double cpu = g_child_cpu_s;
   const Eigen::MatrixX3d normals = SensorFacingNormals(cloud, scan.cloud.normals);  // not timed
   const auto field_n = InChild([&] {
-    return CloudField({}, cloud, normals, PositionOf(body.mesh, source), body.mesh.vertices);
+    return CloudField(g_options, cloud, normals, PositionOf(body.mesh, source), body.mesh.vertices);
   }, &peak_n);
   const double cpu_n = g_child_cpu_s;
   Eigen::VectorXd exact = Eigen::VectorXd::Constant(body.mesh.num_vertices(), NAN);
@@ -423,7 +465,7 @@ void GeneratedScanRows(bool cgal, bool quick, bool field_only) {
   const auto cloud_p2p = InChild([&] {
     std::vector<double> out;
     double t = Now();
-    CloudGeodesics geodesics({}, cloud);
+    CloudGeodesics geodesics(g_options, cloud);
     out.push_back(Now() - t);
     t = Now();
     for (const auto& [a, b] : pairs)
@@ -468,12 +510,23 @@ int Main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--shared") && i + 1 < argc) shared = argv[++i];
     else if (!std::strcmp(argv[i], "--dump") && i + 1 < argc) g_dump = argv[++i];
     else if (!std::strcmp(argv[i], "--body-only")) body_only = true;
+    else if (!std::strcmp(argv[i], "--fit-wedge-deg") && i + 1 < argc)
+      g_options.point_field.fit_wedge_deg = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--surface-offset-fraction") && i + 1 < argc)
+      g_options.point_field.surface_offset_fraction = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--fit-points") && i + 1 < argc)
+      g_options.point_field.fit_points = std::atoi(argv[++i]);
     else {
       std::fprintf(stderr, "usage: geodesic_bench [--shared DIR] [--no-cgal] [--quick] [--body-only] "
-                   "[--dump DIR]\n");
+                   "[--dump DIR] [--fit-wedge-deg D] [--surface-offset-fraction F] "
+                   "[--fit-points N]\n");
       return 1;
     }
   }
+  g_options.point_field.Check();  // InputError (exit 2 below) on a value out of range
+  std::printf("point field: fit_points %d, fit_wedge_deg %g, surface_offset_fraction %g\n",
+              g_options.point_field.fit_points, g_options.point_field.fit_wedge_deg,
+              g_options.point_field.surface_offset_fraction);
   double load[3] = {0, 0, 0};
   if (getloadavg(load, 3) > 0) std::printf("load average at start: %.2f\n", load[0]);
   PrintHeader();
@@ -486,9 +539,9 @@ int Main(int argc, char** argv) {
     body = LoadMesh(meshes / "makehuman-body-remesh-116k.off", LengthUnit::kDecimetre);
     if (!quick && !body_only) {
       MeshRow("bunny 35k (vertices)", LoadMesh(meshes / "bunny-35k.off", LengthUnit::kMetre),
-              cgal, {});
+              cgal, g_options);
       MeshRow("bunny 109k (vertices)",
-              LoadMesh(meshes / "bunny-remesh-109k.off", LengthUnit::kMetre), cgal, {});
+              LoadMesh(meshes / "bunny-remesh-109k.off", LengthUnit::kMetre), cgal, g_options);
     }
     // In a child, so the scan's memory does not count in the rows' peaks.
     double scan_peak = 0;
@@ -501,14 +554,21 @@ int Main(int argc, char** argv) {
     std::printf("%-26s body mesh %lld vertices, %lld seen by a 640x480 px scan\n", "",
                 static_cast<long long>(body.num_vertices()),
                 static_cast<long long>(std::count(seen.begin(), seen.end(), true)));
-    body_exact = MeshRow("body 116k (vertices)", body, cgal && !quick, {}, &seen);
+    body_exact = MeshRow("body 116k (vertices)", body, cgal && !quick, g_options, &seen);
+    // The same body near a source close to the mouth: the lips' faces meet
+    // closer than the vertex spacing, and relative errors near the source are
+    // large where the cloud crosses them (the body row's source is 860 mm away).
+    std::printf("%-26s the body's faces within 100 mm of the mouth, from the chin:\n", "");
+    MeshRow("mouth patch (vertices)",
+            Patch(body, Eigen::Vector3d(0, 645, 140), 100, Eigen::Vector3d(0, 616, 129)),
+            cgal && !quick, g_options);
   }
   GeneratedScanRows(cgal, quick, body_only);
   if (have_meshes && !body_only) {
     std::printf("\ngrowth: the 116k body cloud at four cell sizes (errors vs CGAL above)\n");
     PrintHeader();
     for (const double spacings : {6.0, 4.0, 3.0, 2.0}) {
-      CloudGeodesicsOptions options;
+      CloudGeodesicsOptions options = g_options;
       options.grid.auto_cell_spacings = spacings;
       double peak = 0;
       const auto r = VertexField(options, body.vertices, Eigen::MatrixX3d(0, 3), &peak);
