@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "scanners/core/errors.h"
 
@@ -70,16 +71,26 @@ LocalSurface FitLocalSurface(SurfaceFit fit, const Eigen::MatrixX3d& points,
   // Least-squares quadric in the PCA frame, coordinates scaled to ~1.
   const Eigen::MatrixX3d local = (kept.rowwise() - s.origin.transpose()) * s.frame;
   const double scale = std::max(1e-12, local.leftCols<2>().rowwise().norm().maxCoeff());
-  Eigen::MatrixXd a(kept.rows(), 6);
-  for (Eigen::Index i = 0; i < kept.rows(); ++i) {
+  Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+  for (Eigen::Index i = 0; i < kept.rows(); ++i) {  // fixed-size sums, no GEMM on tiny sizes
     const double u = local(i, 0) / scale, v = local(i, 1) / scale;
-    a.row(i) << u * u, u * v, v * v, u, v, 1.0;
+    const Eigen::Matrix<double, 6, 1> row(u * u, u * v, v * v, u, v, 1.0);
+    normal.selfadjointView<Eigen::Lower>().rankUpdate(row);
+    rhs += row * local(i, 2);
   }
-  const Eigen::Matrix<double, 6, 6> normal = a.transpose() * a;
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> spread(normal,
-                                                                   Eigen::EigenvaluesOnly);
-  if (!(spread.eigenvalues()[0] > 1e-6 * spread.eigenvalues()[5])) return s;  // degenerate
-  const Eigen::Matrix<double, 6, 1> c = normal.ldlt().solve(a.transpose() * local.col(2));
+  normal.triangularView<Eigen::StrictlyUpper>() = normal.transpose();
+  // Degenerate (points on a line, or too few distinct in the plane): the
+  // normal matrix's smallest eigenvalue below 1e-6 of its largest. The
+  // eigenvalues are computed only where the LDLT's reciprocal condition
+  // estimate is not clearly above that (they cost more than the fit).
+  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(normal);
+  if (!(ldlt.info() == Eigen::Success && ldlt.rcond() > 1e-3)) {
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> spread(normal,
+                                                                     Eigen::EigenvaluesOnly);
+    if (!(spread.eigenvalues()[0] > 1e-6 * spread.eigenvalues()[5])) return s;
+  }
+  const Eigen::Matrix<double, 6, 1> c = ldlt.solve(rhs);
   if (!c.allFinite()) return s;
   const double s2 = scale * scale;
   s.coefficients << c[0] / s2, c[1] / s2, c[2] / s2, c[3] / scale, c[4] / scale, c[5];
@@ -91,22 +102,20 @@ namespace {
 // Unit normal of the plane through points[0] and two of points[1 .. 7] that
 // minimises sum_j min(e_j^2, tan2) (see FitOwnSheet); zero if none is proper.
 Eigen::Vector3d MsacNormal(const Eigen::MatrixX3d& points, double tan2) {
-  const Eigen::Vector3d x = points.row(0).transpose();
+  const Eigen::RowVector3d x = points.row(0);
+  Eigen::MatrixX3d unit = points.bottomRows(points.rows() - 1).rowwise() - x;  // to each other point
+  for (Eigen::Index j = 0; j < unit.rows(); ++j)  // e_j = |unit_j . n|; a duplicate of x costs 0
+    if (const double length = unit.row(j).norm(); length > 0) unit.row(j) /= length;
   const Eigen::Index first = std::min<Eigen::Index>(8, points.rows());
   Eigen::Vector3d best_normal = Eigen::Vector3d::Zero();
   double best = std::numeric_limits<double>::infinity();
   for (Eigen::Index a = 1; a < first; ++a)
     for (Eigen::Index b = a + 1; b < first; ++b) {
-      const Eigen::Vector3d u = points.row(a).transpose() - x, v = points.row(b).transpose() - x;
+      const Eigen::Vector3d u = (points.row(a) - x).transpose(), v = (points.row(b) - x).transpose();
       Eigen::Vector3d n = u.cross(v);
       if (n.norm() < 0.3 * u.norm() * v.norm()) continue;  // nearly collinear: a poor plane
       n.normalize();
-      double cost = 0;
-      for (Eigen::Index j = 1; j < points.rows() && cost < best; ++j) {
-        const Eigen::Vector3d w = points.row(j).transpose() - x;
-        const double h = n.dot(w);
-        cost += std::min(h * h / w.squaredNorm(), tan2);
-      }
+      const double cost = (unit * n).array().square().min(tan2).sum();
       if (cost < best) best = cost, best_normal = n;
     }
   return best_normal;
@@ -133,15 +142,17 @@ bool FitOwnSheet(const Eigen::MatrixX3d& points, double wedge_deg, double inlier
   if (points.rows() < 10) return false;
   const double tan2 = std::pow(std::tan(wedge_deg * M_PI / 180), 2);
   Eigen::MatrixX3d kept = points;
+  LocalSurface seed;
+  bool seeded = false;  // seed = PcaPlane(kept) already
   Eigen::Vector3d n = MsacNormal(points, tan2), through = points.row(0).transpose();
   for (int round = 0; round < 2 && n.squaredNorm() > 0; ++round) {
-    const Eigen::MatrixX3d in = InWedge(points, n, through, tan2);
+    Eigen::MatrixX3d in = InWedge(points, n, through, tan2);
     if (in.rows() < 10) break;  // too few on the sheet: all the points, as before
-    const LocalSurface plane = PcaPlane(in);
-    n = plane.normal(), through = plane.origin;
-    if (round == 1) kept = in;
+    seed = PcaPlane(in);
+    n = seed.normal(), through = seed.origin;
+    if (round == 1) kept = std::move(in), seeded = true;
   }
-  LocalSurface seed = PcaPlane(kept);
+  if (!seeded) seed = PcaPlane(kept);
   if (seed.normal().dot(orient) < 0) seed.frame.col(1) *= -1, seed.frame.col(2) *= -1;
   *surface = FitLocalSurface(SurfaceFit::kQuadric, kept, seed, inlier_offset_mm);
   double sum = 0;

@@ -76,6 +76,13 @@ TEST(LocalSurface, OwnSheetFitIgnoresAnotherSheetNearby) {
   for (Eigen::Index j = 0; j < near.rows(); ++j)
     if (near(j, 2) > 1) EXPECT_GT(std::abs(fit.Offset(near.row(j).transpose())), 1.0);
     else EXPECT_LT(std::abs(fit.Offset(near.row(j).transpose())), 0.05);
+
+  // Duplicates of the point (scans repeat points at seams) change nothing.
+  Eigen::MatrixX3d doubled = near;
+  doubled.row(1) = doubled.row(2) = near.row(0);
+  LocalSurface again;
+  ASSERT_TRUE(FitOwnSheet(doubled, 30, 2.0, z, &again, &rms_mm));
+  EXPECT_LT(AngleDeg(again.normal(), z), 1.0);
 }
 
 // Scan noise (0.5 mm along the normal on 1.5 mm spacing) is not another
