@@ -64,7 +64,7 @@ struct PointFieldOptions {
   // generated scan: mean error 1.10 % at 8, 0.13 % at 12); more reach across
   // slits no sheet test can see without normals (the 116k MakeHuman body's
   // lips: max 3.4 % at 12, 17.7 % at 16). geodesic_bench with
-  // agree_fraction 0; docs/geodesics.md.
+  // agree_fraction 0 and the node-based fits of 2026-11-24; docs/geodesics.md.
   int neighbours = 12;
   double max_chord_angle_deg = 45;  // chord vs both points' tangent planes; default 45
   // Measure chords between the points' feet on their fitted surfaces
