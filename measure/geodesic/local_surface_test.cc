@@ -24,9 +24,7 @@ Eigen::MatrixX3d Nearest(const Eigen::MatrixX3d& cloud, const Eigen::Vector3d& x
   std::vector<int> near;
   std::vector<double> d2;
   index.Knn(x, k, &near, &d2);
-  Eigen::MatrixX3d out(static_cast<Eigen::Index>(near.size()), 3);
-  for (size_t j = 0; j < near.size(); ++j) out.row(static_cast<Eigen::Index>(j)) = cloud.row(near[j]);
-  return out;
+  return cloud(near, Eigen::all);
 }
 
 // A point on the plane z = 0 (2 mm spacing) with another sheet among its 24
@@ -41,7 +39,7 @@ TEST(LocalSurface, OwnSheetFitIgnoresAnotherSheetNearby) {
   std::vector<Eigen::Vector3d> other;
   const double slope = 60 * M_PI / 180, base = 3;
   for (Eigen::Index i = 0; i < rising.rows(); ++i)
-    if (rising(i, 1) >= 0)  // (x, t) -> (x, t cos, 2 + t sin)
+    if (rising(i, 1) >= 0)  // (x, t) -> (x, t cos, base + t sin)
       other.emplace_back(rising(i, 0), rising(i, 1) * std::cos(slope),
                          base + rising(i, 1) * std::sin(slope));
   Eigen::MatrixX3d sheet(static_cast<Eigen::Index>(other.size()), 3);

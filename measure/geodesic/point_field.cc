@@ -81,8 +81,8 @@ void FillSurfel(const PointFieldOptions& options, const CloudGrid& grid, Eigen::
   TangentPlane plane = cell.PlaneAt(x);
   if (options.fit_points > 0) {
     const Eigen::Index m = std::min<Eigen::Index>(options.fit_points, near->size());
-    Eigen::MatrixX3d pts(m, 3);
-    for (Eigen::Index j = 0; j < m; ++j) pts.row(j) = grid.index().point((*near)[j]);
+    const Eigen::MatrixX3d pts =
+        grid.index().points()(Eigen::Map<const Eigen::VectorXi>(near->data(), m), Eigen::all);
     if (FitOwnSheet(pts, options.fit_wedge_deg, 0.5 * grid.sheet_gap_mm(), plane.normal,
                     &s->surface[at], &s->rms_mm[at]))
       plane = s->surface[at].PlaneAt(x);
