@@ -25,8 +25,9 @@ set(BESPOKE_SHARED_DIR "${PROJECT_SOURCE_DIR}/../shared" CACHE PATH
   "The ../shared folder with the thesis and test data (tests skip where it is absent)")
 
 # bespoke_add_library(NAME <name> SOURCES ... [PUBLIC_LIBS ...] [PRIVATE_LIBS ...])
-# One static library per top-level folder; headers are included as
-# "folder/sub/file.h" from the repository root.
+# One static library per stage folder; headers are included as
+# "top/stage/file.h" from the repository root. Heavy third-party libraries go
+# in PRIVATE_LIBS so that users of the library never see their headers.
 function(bespoke_add_library)
   cmake_parse_arguments(ARG "" "NAME" "SOURCES;PUBLIC_LIBS;PRIVATE_LIBS" ${ARGN})
   add_library(${ARG_NAME} STATIC ${ARG_SOURCES})
@@ -62,4 +63,31 @@ function(bespoke_add_test)
     DISCOVERY_MODE PRE_TEST
     WORKING_DIRECTORY ${PROJECT_BINARY_DIR}
     PROPERTIES ${properties})
+endfunction()
+
+# bespoke_add_cli_test(NAME <name> SOURCES ... [LIBS ...] [LABELS ...])
+# A test binary that runs the `bespoke` command as a process; it gets the
+# binary's path as BESPOKE_BINARY and is rebuilt with it.
+function(bespoke_add_cli_test)
+  cmake_parse_arguments(ARG "" "NAME" "SOURCES;LIBS;LABELS" ${ARGN})
+  bespoke_add_test(NAME ${ARG_NAME} SOURCES ${ARG_SOURCES} LIBS ${ARG_LIBS} LABELS ${ARG_LABELS})
+  if(TARGET ${ARG_NAME})
+    add_dependencies(${ARG_NAME} bespoke)
+    target_compile_definitions(${ARG_NAME} PRIVATE BESPOKE_BINARY="$<TARGET_FILE:bespoke>")
+  endif()
+endfunction()
+
+# bespoke_add_tool(NAME <name> SOURCES ... LIBS ...)
+# A benchmark or evaluation program (eval/bench): built with the benchmarks
+# (BESPOKE_BUILD_BENCHMARKS), never a test; BESPOKE_DEFAULT_SHARED_DIR tells
+# it where ../shared is.
+function(bespoke_add_tool)
+  if(NOT BESPOKE_BUILD_BENCHMARKS)
+    return()
+  endif()
+  cmake_parse_arguments(ARG "" "NAME" "SOURCES;LIBS" ${ARGN})
+  add_executable(${ARG_NAME} ${ARG_SOURCES})
+  target_link_libraries(${ARG_NAME} PRIVATE ${ARG_LIBS} bespoke_warnings)
+  target_compile_definitions(${ARG_NAME} PRIVATE
+    BESPOKE_DEFAULT_SHARED_DIR="${BESPOKE_SHARED_DIR}")
 endfunction()

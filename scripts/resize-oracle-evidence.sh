@@ -23,7 +23,7 @@ BUILD_DIR=${BUILD_DIR:-build}
 COUNT=${COUNT:-20}
 OUT=${1:-$(mktemp -d /tmp/resize-oracle.XXXXXX)}
 BESPOKE="$BUILD_DIR/bespoke"
-EVIDENCE="$BUILD_DIR/tests/bench/resize_evidence"
+EVIDENCE="$BUILD_DIR/eval/bench/resize_evidence"
 for tool in "$BESPOKE" "$EVIDENCE"; do
   [ -x "$tool" ] || { echo "missing $tool (build it: cmake --build $BUILD_DIR --target bespoke resize_evidence)" >&2; exit 1; }
 done

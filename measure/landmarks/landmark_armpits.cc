@@ -15,8 +15,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The lateral pieces of slice `s` (not trunk, on the `sign` side, at least
 // 4 points) whose centroid lies within `radius` of `centre` (xy).
-std::vector<int> LateralPiecesNear(const Context& c, const Slice& s, int sign, const Eigen::Vector2d& centre,
-                                   double radius) {
+std::vector<int> LateralPiecesNear(const Context& c, const Slice& s, int sign,
+                                   const Eigen::Vector2d& centre, double radius) {
   const std::vector<int> trunk = c.TrunkPieces(s);
   std::vector<int> out;
   for (size_t i = 0; i < s.pieces.size(); ++i) {
@@ -29,7 +29,8 @@ std::vector<int> LateralPiecesNear(const Context& c, const Slice& s, int sign, c
 }
 
 // Of those, the one nearest `centre`; -1 when none.
-int LateralPieceNear(const Context& c, const Slice& s, int sign, const Eigen::Vector2d& centre, double radius) {
+int LateralPieceNear(const Context& c, const Slice& s, int sign, const Eigen::Vector2d& centre,
+                     double radius) {
   int best = -1;
   for (int i : LateralPiecesNear(c, s, sign, centre, radius))
     if (best < 0 || (s.pieces[static_cast<size_t>(i)].centroid - centre).norm() <
@@ -41,11 +42,12 @@ int LateralPieceNear(const Context& c, const Slice& s, int sign, const Eigen::Ve
 // Of those, the one with the most points; -1 when none. At the armpit the
 // arm's section is the big piece beside the trunk; the nearest piece can be
 // a fragment of the armpit fold (a sparse scan's thin slice).
-int LargestLateralPieceNear(const Context& c, const Slice& s, int sign, const Eigen::Vector2d& centre,
-                            double radius) {
+int LargestLateralPieceNear(const Context& c, const Slice& s, int sign,
+                            const Eigen::Vector2d& centre, double radius) {
   int best = -1;
   for (int i : LateralPiecesNear(c, s, sign, centre, radius))
-    if (best < 0 || s.pieces[static_cast<size_t>(i)].rows.size() > s.pieces[static_cast<size_t>(best)].rows.size())
+    if (best < 0 || s.pieces[static_cast<size_t>(i)].rows.size() >
+                        s.pieces[static_cast<size_t>(best)].rows.size())
       best = i;
   return best;
 }
@@ -59,12 +61,16 @@ double Extent(const Context& c, const Slice& s, int sign) {
 
 // A-pose: follows the arm's piece down from slice k, recording centroids.
 void TrackArmDown(const Context& c, int k, int piece, int sign, ArmInfo* arm) {
-  Eigen::Vector2d centre = c.slices[static_cast<size_t>(k)].pieces[static_cast<size_t>(piece)].centroid;
+  Eigen::Vector2d centre =
+      c.slices[static_cast<size_t>(k)].pieces[static_cast<size_t>(piece)].centroid;
   int lost = 0;
   for (int s = k; s >= 0 && lost < 4; --s) {
     const Slice& slice = c.slices[static_cast<size_t>(s)];
     const int i = LateralPieceNear(c, slice, sign, centre, 60);
-    if (i < 0) { ++lost; continue; }
+    if (i < 0) {
+      ++lost;
+      continue;
+    }
     lost = 0;
     const Piece& p = slice.pieces[static_cast<size_t>(i)];
     centre = p.centroid;
@@ -110,7 +116,8 @@ void FindArmpit(Context* c, int sign) {
   const double h = c->crown_z;
   const int top = SliceAt(c->slices, 0.84 * h), bottom = SliceAt(c->slices, c->crotch_z + 0.15 * h);
   std::vector<double> ext(c->slices.size(), -kInf);
-  for (int s = bottom; s <= top; ++s) ext[static_cast<size_t>(s)] = Extent(*c, c->slices[static_cast<size_t>(s)], sign);
+  for (int s = bottom; s <= top; ++s)
+    ext[static_cast<size_t>(s)] = Extent(*c, c->slices[static_cast<size_t>(s)], sign);
   // The trunk's own half-width for reference: its narrowest between 40 %
   // and 60 % of the crotch-to-crown height (the waist; no arm reaches in).
   double waist_ext = kInf;
@@ -125,10 +132,12 @@ void FindArmpit(Context* c, int sign) {
   int k = -1;
   for (int s = top - 1; s >= bottom + 2 && k < 0; --s) {
     double above = -kInf;
-    for (int t = s + 1; t <= std::min(top, s + 12); ++t) above = std::max(above, ext[static_cast<size_t>(t)]);
+    for (int t = s + 1; t <= std::min(top, s + 12); ++t)
+      above = std::max(above, ext[static_cast<size_t>(t)]);
     bool drop = true;
     for (int t = s; t >= s - 2; --t) {
-      drop &= ext[static_cast<size_t>(t)] < above - 30 && ext[static_cast<size_t>(t)] < waist_ext + 90;
+      drop &=
+          ext[static_cast<size_t>(t)] < above - 30 && ext[static_cast<size_t>(t)] < waist_ext + 90;
     }
     if (drop) k = s;
   }
@@ -138,9 +147,13 @@ void FindArmpit(Context* c, int sign) {
     const double z = c->crotch_z + 0.56 * (h - c->crotch_z);
     const Slice& s = c->At(z);
     const std::vector<int> rows = c->TrunkRows(s);
-    if (rows.empty()) { c->Missing(name, "the arm touches the torso and no trunk section was found"); return; }
+    if (rows.empty()) {
+      c->Missing(name, "the arm touches the torso and no trunk section was found");
+      return;
+    }
     int side = rows.front();
-    for (int r : rows) if (sign * c->points(r, 0) > sign * c->points(side, 0)) side = r;
+    for (int r : rows)
+      if (sign * c->points(r, 0) > sign * c->points(side, 0)) side = r;
     arm.found = true;
     arm.armpit_z = z;
     arm.armpit = c->P(side);
@@ -178,7 +191,8 @@ void FindArmpit(Context* c, int sign) {
     double side_x = -kInf;
     for (int r : trunk) {
       const double x = sign * c->points(r, 0);
-      if (std::abs(c->points(r, 1) - arm_y) < 10 && x > ext[static_cast<size_t>(k)] - 40) side_x = std::max(side_x, x);
+      if (std::abs(c->points(r, 1) - arm_y) < 10 && x > ext[static_cast<size_t>(k)] - 40)
+        side_x = std::max(side_x, x);
     }
     if (!std::isfinite(side_x)) side_x = ext[static_cast<size_t>(k)];
     const double apex = below.z + 0.5 * c->step;
@@ -190,7 +204,9 @@ void FindArmpit(Context* c, int sign) {
     TrackArmDown(*c, k, piece, sign, &arm);
     // Above the armpit the arm is part of the trunk's section: its points
     // beyond the armpit (the deltoid) belong to the arm too.
-    for (int s = k + 1; s < static_cast<int>(c->slices.size()) && c->slices[static_cast<size_t>(s)].z < apex + 160; ++s) {
+    for (int s = k + 1;
+         s < static_cast<int>(c->slices.size()) && c->slices[static_cast<size_t>(s)].z < apex + 160;
+         ++s) {
       for (int r : c->slices[static_cast<size_t>(s)].rows) {
         if (sign * c->points(r, 0) > sign * arm.armpit.x() + 5) arm.rows.push_back(r);
       }
@@ -199,7 +215,8 @@ void FindArmpit(Context* c, int sign) {
     // T-pose: the arm's underside; its bottom meets the trunk's side.
     arm.t_pose = true;
     const double side_x = ext[static_cast<size_t>(k)];
-    const Slice& above = c->slices[static_cast<size_t>(std::min<int>(k + 1, static_cast<int>(c->slices.size()) - 1))];
+    const Slice& above = c->slices[static_cast<size_t>(
+        std::min<int>(k + 1, static_cast<int>(c->slices.size()) - 1))];
     double y = 0;
     int n = 0;
     for (int r : above.rows) {

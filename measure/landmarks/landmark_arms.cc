@@ -1,10 +1,9 @@
 // Arms: wrist (narrowest section before the hand), elbow and upper-arm
 // points along the arm's principal axis.
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <Eigen/Eigenvalues>
 
 #include "measure/landmarks/landmark_context.h"
 #include "scanners/core/errors.h"
@@ -24,16 +23,18 @@ constexpr double kElbowShare = 0.49;
 constexpr double kStyloidPastNarrowest_mm = 15;
 
 struct ArmFrame {
-  Eigen::Vector3d origin, axis;  // origin: the shoulder point (or armpit); axis: outwards along the arm
+  Eigen::Vector3d origin,
+      axis;  // origin: the shoulder point (or armpit); axis: outwards along the arm
   std::vector<int> rows;
-  std::vector<double> t;         // (p - origin) . axis per row
-  double length = 0;             // max t
+  std::vector<double> t;  // (p - origin) . axis per row
+  double length = 0;      // max t
 };
 
 bool MakeFrame(const Context& c, const ArmInfo& arm, const Eigen::Vector3d& origin, ArmFrame* f) {
   if (arm.centre_line.size() < 6 || arm.rows.empty()) return false;
   Eigen::MatrixX3d line(static_cast<Eigen::Index>(arm.centre_line.size()), 3);
-  for (size_t i = 0; i < arm.centre_line.size(); ++i) line.row(static_cast<Eigen::Index>(i)) = arm.centre_line[i];
+  for (size_t i = 0; i < arm.centre_line.size(); ++i)
+    line.row(static_cast<Eigen::Index>(i)) = arm.centre_line[i];
   const Eigen::RowVector3d mean = line.colwise().mean();
   const Eigen::Matrix3d cov = (line.rowwise() - mean).transpose() * (line.rowwise() - mean);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
@@ -71,7 +72,8 @@ double SectionRadius(const Context& c, const ArmFrame& f, double t, double half)
 
 // The row in the slab |t - t0| < half most extreme along `direction`
 // (noise averaged); -1 when the slab is empty.
-int BestInSlab(const Context& c, const ArmFrame& f, double t0, double half, const Eigen::Vector3d& direction) {
+int BestInSlab(const Context& c, const ArmFrame& f, double t0, double half,
+               const Eigen::Vector3d& direction) {
   std::vector<int> candidates;
   for (size_t i = 0; i < f.rows.size(); ++i) {
     if (std::abs(f.t[i] - t0) <= half) candidates.push_back(f.rows[i]);
@@ -84,7 +86,8 @@ void FindArm(Context* c, int sign) {
   const std::string side = Side(sign);
   const bool has_shoulder = c->Has("shoulder" + side);
   ArmFrame f;
-  if (!arm.found || !MakeFrame(*c, arm, has_shoulder ? c->Pos("shoulder" + side) : arm.armpit, &f)) {
+  if (!arm.found ||
+      !MakeFrame(*c, arm, has_shoulder ? c->Pos("shoulder" + side) : arm.armpit, &f)) {
     for (const char* n : {"upper_arm", "elbow", "wrist"}) {
       c->Missing(n + side, arm.touching ? "the arm touches the torso" : "the arm was not found");
     }
@@ -97,7 +100,8 @@ void FindArm(Context* c, int sign) {
     // the scan (out of the booth's view, or merged with the thigh).
     for (const char* n : {"upper_arm", "elbow", "wrist"}) {
       c->Missing(n + side, "the arm's end is not in the scan (arm " +
-                               std::to_string(static_cast<int>(f.length)) + " mm from the shoulder)");
+                               std::to_string(static_cast<int>(f.length)) +
+                               " mm from the shoulder)");
     }
     return;
   }
@@ -110,7 +114,8 @@ void FindArm(Context* c, int sign) {
     if (r < best) best = r, wrist_t = t;
   }
   if (wrist_t < 0) {
-    for (const char* n : {"upper_arm", "elbow", "wrist"}) c->Missing(n + side, "the forearm was not found");
+    for (const char* n : {"upper_arm", "elbow", "wrist"})
+      c->Missing(n + side, "the forearm was not found");
     return;
   }
   const Eigen::Vector3d back = -Eigen::Vector3d::UnitY();
@@ -141,8 +146,10 @@ void FindArm(Context* c, int sign) {
     if (std::abs(t - half) < 10 && (d - t * upper_axis).norm() < 90) slab.push_back(r);
   }
   const int upper = c->SmoothExtreme(slab, outward, 10);
-  if (upper >= 0) c->Put("upper_arm" + side, c->P(upper), confidence * 0.8, "mid_upper_arm_outside", flags);
-  else c->Missing("upper_arm" + side, "no arm points midway to the elbow");
+  if (upper >= 0)
+    c->Put("upper_arm" + side, c->P(upper), confidence * 0.8, "mid_upper_arm_outside", flags);
+  else
+    c->Missing("upper_arm" + side, "no arm points midway to the elbow");
 }
 
 }  // namespace

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "measure/geodesic/point_index.h"
+#include "measure/cloud_geodesic/point_index.h"
 #include "measure/landmarks/landmark_slices.h"
 #include "measure/landmarks/landmarks.h"
 
@@ -23,13 +23,13 @@ namespace bespoke::landmarks {
 // What the armpit stage learnt about one arm (used by later stages).
 struct ArmInfo {
   bool found = false;
-  bool t_pose = false;         // the arm leaves the trunk above the armpit, not beside it
-  bool touching = false;       // no gap between arm and trunk was seen
-  double armpit_z = 0;         // height where arm and trunk sections join (mm)
+  bool t_pose = false;    // the arm leaves the trunk above the armpit, not beside it
+  bool touching = false;  // no gap between arm and trunk was seen
+  double armpit_z = 0;    // height where arm and trunk sections join (mm)
   Eigen::Vector3d armpit = Eigen::Vector3d::Zero();
   // Centre line of the arm from the armpit outwards (body frame, mm).
   std::vector<Eigen::Vector3d> centre_line;
-  std::vector<int> rows;       // cloud rows of the arm below/beyond the armpit (may repeat)
+  std::vector<int> rows;  // cloud rows of the arm below/beyond the armpit (may repeat)
 };
 
 struct Context {
@@ -37,9 +37,9 @@ struct Context {
   std::unique_ptr<PointIndex> index;
   std::vector<Slice> slices;
   double step = 5;
-  double crown_z = 0;      // stature (mm)
+  double crown_z = 0;  // stature (mm)
   double crotch_z = 0;
-  ArmInfo arm[2];          // [0] right, [1] left
+  ArmInfo arm[2];  // [0] right, [1] left
   LandmarkSet found;
 
   explicit Context(const Eigen::MatrixX3d& p) : points(p) {}

@@ -29,11 +29,13 @@ std::vector<std::vector<int>> TrackLeg(const Context& c, int sign) {
   int first = -1;
   for (size_t i = 0; i < s0.pieces.size(); ++i) {
     const Piece& p = s0.pieces[i];
-    if (sign * p.centroid.x() > 0 && (first < 0 || p.rows.size() > s0.pieces[static_cast<size_t>(first)].rows.size())) {
+    if (sign * p.centroid.x() > 0 &&
+        (first < 0 || p.rows.size() > s0.pieces[static_cast<size_t>(first)].rows.size())) {
       first = static_cast<int>(i);
     }
   }
-  if (first < 0) throw InputError("landmarks: no " + std::string(sign > 0 ? "right" : "left") + " leg found");
+  if (first < 0)
+    throw InputError("landmarks: no " + std::string(sign > 0 ? "right" : "left") + " leg found");
   for (int dir : {+1, -1}) {
     Eigen::Vector2d centre = s0.pieces[static_cast<size_t>(first)].centroid;
     const int end = dir > 0 ? SliceAt(c.slices, c.crotch_z - c.step) : 0;
@@ -56,8 +58,8 @@ std::vector<std::vector<int>> TrackLeg(const Context& c, int sign) {
 // The leg row within `half` of height z passing `keep` that is most
 // extreme along `direction` (noise averaged); -1 when none.
 template <typename Keep>
-int BestNear(const Context& c, const std::vector<std::vector<int>>& leg, double z, double half, Keep keep,
-             const Eigen::Vector3d& direction, double radius_mm = 12) {
+int BestNear(const Context& c, const std::vector<std::vector<int>>& leg, double z, double half,
+             Keep keep, const Eigen::Vector3d& direction, double radius_mm = 12) {
   std::vector<int> candidates;
   for (int s = SliceAt(c.slices, z - half); s <= SliceAt(c.slices, z + half); ++s) {
     for (int r : leg[static_cast<size_t>(s)]) {
@@ -86,13 +88,16 @@ void FindLeg(Context* c, int sign) {
   }
   const double knee_z = kKneeShare * c->crotch_z;
   const int knee = BestNear(*c, leg, knee_z, 15, all, Eigen::Vector3d::UnitY());
-  if (knee >= 0) c->Put("knee" + side, c->P(knee), 0.6, "proportion_front_max");
-  else c->Missing("knee" + side, "no leg section at knee height");
+  if (knee >= 0)
+    c->Put("knee" + side, c->P(knee), 0.6, "proportion_front_max");
+  else
+    c->Missing("knee" + side, "no leg section at knee height");
   const double ankle_z = kAnkleShare * c->crotch_z;
   // The ankle's centre: the leg's section 40 mm higher, above the foot.
   double ay = 0;
   int n = 0;
-  for (int r : leg[static_cast<size_t>(SliceAt(c->slices, ankle_z + 40))]) ay += c->points(r, 1), ++n;
+  for (int r : leg[static_cast<size_t>(SliceAt(c->slices, ankle_z + 40))])
+    ay += c->points(r, 1), ++n;
   if (n == 0) {
     c->Missing("ankle_inside" + side, "no leg section above the ankle");
     c->Missing("ankle_outside" + side, "no leg section above the ankle");
@@ -101,10 +106,14 @@ void FindLeg(Context* c, int sign) {
     auto near_axis = [&](const Eigen::Vector3d& p) { return std::abs(p.y() - ay) < 30; };
     const int in = BestNear(*c, leg, ankle_z, 12, near_axis, Eigen::Vector3d(-sign, 0, 0));
     const int out = BestNear(*c, leg, ankle_z, 12, near_axis, Eigen::Vector3d(sign, 0, 0));
-    if (in >= 0) c->Put("ankle_inside" + side, c->P(in), 0.6, "proportion_section_inside");
-    else c->Missing("ankle_inside" + side, "no points at the inner ankle");
-    if (out >= 0) c->Put("ankle_outside" + side, c->P(out), 0.6, "proportion_section_outside");
-    else c->Missing("ankle_outside" + side, "no points at the outer ankle");
+    if (in >= 0)
+      c->Put("ankle_inside" + side, c->P(in), 0.6, "proportion_section_inside");
+    else
+      c->Missing("ankle_inside" + side, "no points at the inner ankle");
+    if (out >= 0)
+      c->Put("ankle_outside" + side, c->P(out), 0.6, "proportion_section_outside");
+    else
+      c->Missing("ankle_outside" + side, "no points at the outer ankle");
   }
   // Calf: the most backward point of the leg between 30 % and 90 % of the
   // way from the ankle to the knee, averaged over 25 mm (the calf's back is
@@ -112,9 +121,12 @@ void FindLeg(Context* c, int sign) {
   const double lo = ankle_z + 0.3 * (knee_z - ankle_z), hi = ankle_z + 0.9 * (knee_z - ankle_z);
   // (The level of the largest leg girth instead was tried: MakeHuman
   // median 37 -> 24 mm but parametric 5 -> 28 mm and worse maxima.)
-  const int calf = BestNear(*c, leg, 0.5 * (lo + hi), 0.5 * (hi - lo), all, -Eigen::Vector3d::UnitY(), 25);
-  if (calf >= 0) c->Put("calf" + side, c->P(calf), 0.6, "leg_back_max");
-  else c->Missing("calf" + side, "no leg section between ankle and knee");
+  const int calf =
+      BestNear(*c, leg, 0.5 * (lo + hi), 0.5 * (hi - lo), all, -Eigen::Vector3d::UnitY(), 25);
+  if (calf >= 0)
+    c->Put("calf" + side, c->P(calf), 0.6, "leg_back_max");
+  else
+    c->Missing("calf" + side, "no leg section between ankle and knee");
 }
 
 }  // namespace
@@ -124,7 +136,8 @@ void FindLegs(Context* c) {
     try {
       FindLeg(c, sign);
     } catch (const InputError& e) {
-      for (const char* n : {"thigh", "knee", "calf", "ankle_inside", "ankle_outside"}) c->Missing(n + Side(sign), e.what());
+      for (const char* n : {"thigh", "knee", "calf", "ankle_inside", "ankle_outside"})
+        c->Missing(n + Side(sign), e.what());
     }
   }
 }

@@ -5,8 +5,8 @@
 #include <limits>
 
 #include "measure/landmarks/landmark_context.h"
+#include "measure/tape/convex_hull_2d.h"
 #include "scanners/core/errors.h"
-#include "scanners/truth/convex_hull_2d.h"
 
 namespace bespoke::landmarks {
 namespace {
@@ -16,8 +16,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kBackNeckBelowNarrowest = 0.015;
 
 struct Neck {
-  double z = 0;      // narrowest section above the shoulders
-  double y = 0;      // its centroid's y
+  double z = 0;  // narrowest section above the shoulders
+  double y = 0;  // its centroid's y
 };
 
 Neck NarrowestNeck(const Context& c, double from_z) {
@@ -57,15 +57,17 @@ bool Shoulder(Context* c, int sign, Eigen::Vector3d* out) {
   for (Eigen::Index r = 0; r < c->points.rows(); ++r) {
     const Eigen::Vector3d p = c->P(static_cast<int>(r));
     const double x = sign * p.x();
-    if (std::abs(p.y() - yc) > 25 || p.z() < arm.armpit_z + 30 || p.z() > arm.armpit_z + 0.14 * c->crown_z ||
-        x < 0.6 * ax) {
+    if (std::abs(p.y() - yc) > 25 || p.z() < arm.armpit_z + 30 ||
+        p.z() > arm.armpit_z + 0.14 * c->crown_z || x < 0.6 * ax) {
       continue;
     }
     // A-pose: the upper-outer corner (x + z largest; the arm falls away
     // steeper than 45 deg). T-pose: the top of the shoulder over the armpit.
     double score;
-    if (arm.t_pose) score = std::abs(x - ax) < 6 ? p.z() : -kInf;
-    else score = x + p.z();
+    if (arm.t_pose)
+      score = std::abs(x - ax) < 6 ? p.z() : -kInf;
+    else
+      score = x + p.z();
     if (score > best_score) best_score = score, best = static_cast<int>(r);
   }
   if (best < 0 || !std::isfinite(best_score)) return false;
@@ -76,8 +78,8 @@ bool Shoulder(Context* c, int sign, Eigen::Vector3d* out) {
 // Side neck point: in the coronal band through the neck, the contour point
 // farthest below the chord from the neck's side (3 % of stature above the
 // back neck point's height) to the shoulder point.
-bool SideNeck(const Context& c, int sign, const Neck& neck, double top_z, const Eigen::Vector3d& acromion,
-              Eigen::Vector3d* out) {
+bool SideNeck(const Context& c, int sign, const Neck& neck, double top_z,
+              const Eigen::Vector3d& acromion, Eigen::Vector3d* out) {
   double top_x = -kInf;
   for (int r : c.At(top_z).rows) {
     if (std::abs(c.points(r, 1) - neck.y) < 10) top_x = std::max(top_x, sign * c.points(r, 0));
@@ -94,7 +96,9 @@ bool SideNeck(const Context& c, int sign, const Neck& neck, double top_z, const 
     // Only the inner 40 % of the way out to the shoulder point: the base of
     // the neck, not a dip where the shoulder line meets the arm.
     const double reach = top_x + 0.4 * (p2.x() - top_x);
-    if (std::abs(p.y() - neck.y) > 8 || x < top_x - 10 || x > reach || p.z() < p2.y() - 5 || p.z() > top_z + 5) continue;
+    if (std::abs(p.y() - neck.y) > 8 || x < top_x - 10 || x > reach || p.z() < p2.y() - 5 ||
+        p.z() > top_z + 5)
+      continue;
     const double depth = (Eigen::Vector2d(x, p.z()) - p1).dot(down);
     if (depth > best) best = depth, *out = p;
   }
@@ -109,7 +113,8 @@ void AxillaFolds(Context* c, int sign, const Eigen::Vector3d& acromion) {
   const double z = arm.armpit_z + 0.25 * (acromion.z() - arm.armpit_z);
   const std::vector<int> rows = c->TrunkRows(c->At(z));
   Eigen::MatrixX2d xy(static_cast<Eigen::Index>(rows.size()), 2);
-  for (size_t i = 0; i < rows.size(); ++i) xy.row(static_cast<Eigen::Index>(i)) = c->points.row(rows[i]).head<2>();
+  for (size_t i = 0; i < rows.size(); ++i)
+    xy.row(static_cast<Eigen::Index>(i)) = c->points.row(rows[i]).head<2>();
   const std::vector<int> hull = ConvexHullIndices(xy);
   if (hull.size() < 3) return;
   const double ax = sign * arm.armpit.x();
@@ -119,19 +124,23 @@ void AxillaFolds(Context* c, int sign, const Eigen::Vector3d& acromion) {
     for (size_t i = 0; i < rows.size(); ++i) {
       const Eigen::Vector3d p = c->P(rows[i]);
       const double x = sign * p.x();
-      if (x < ax - 70 || x > ax + 40 || (front ? p.y() <= arm.armpit.y() : p.y() >= arm.armpit.y())) continue;
+      if (x < ax - 70 || x > ax + 40 || (front ? p.y() <= arm.armpit.y() : p.y() >= arm.armpit.y()))
+        continue;
       double depth = kInf;
       const Eigen::Vector2d q = p.head<2>();
       for (size_t k = 0; k < hull.size(); ++k) {
         const Eigen::Vector2d a = xy.row(hull[k]), b = xy.row(hull[(k + 1) % hull.size()]);
-        const double t = std::clamp((q - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-12), 0.0, 1.0);
+        const double t =
+            std::clamp((q - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-12), 0.0, 1.0);
         depth = std::min(depth, (a + t * (b - a) - q).norm());
       }
       if (depth > best) best = depth, best_point = p;
     }
     const std::string name = std::string(front ? "axilla_front" : "axilla_back") + Side(sign);
-    if (best < 0) c->Missing(name, "no armpit fold in the section above the armpit");
-    else c->Put(name, best_point, arm.touching ? 0.3 : 0.7, "deepest_hull_pocket");
+    if (best < 0)
+      c->Missing(name, "no armpit fold in the section above the armpit");
+    else
+      c->Put(name, best_point, arm.touching ? 0.3 : 0.7, "deepest_hull_pocket");
   }
 }
 
@@ -156,8 +165,10 @@ void FindNeckAndShoulders(Context* c) {
     Eigen::Vector3d p;
     if (SeamPoint(*c, z, true, &p) && p.y() < best_y) best_y = p.y(), best_z = z;
   }
-  if (best_z > 0) PutSeam(c, "front_neck", best_z, true, 0.6, "front_profile_notch");
-  else c->Missing("front_neck", "no front centre-line points below the neck");
+  if (best_z > 0)
+    PutSeam(c, "front_neck", best_z, true, 0.6, "front_profile_notch");
+  else
+    c->Missing("front_neck", "no front centre-line points below the neck");
   for (int sign : {+1, -1}) {
     Eigen::Vector3d acromion;
     if (!Shoulder(c, sign, &acromion)) {
@@ -172,7 +183,8 @@ void FindNeckAndShoulders(Context* c) {
     // to the front neck point (the cervical spine lies behind the middle).
     Neck plane = neck;
     if (c->Has("back_neck") && c->Has("front_neck")) {
-      plane.y = c->Pos("back_neck").y() + 0.4 * (c->Pos("front_neck").y() - c->Pos("back_neck").y());
+      plane.y =
+          c->Pos("back_neck").y() + 0.4 * (c->Pos("front_neck").y() - c->Pos("back_neck").y());
     }
     if (SideNeck(*c, sign, plane, back_z + 0.03 * c->crown_z, acromion, &side)) {
       c->Put("side_neck" + Side(sign), side, 0.7, "coronal_neck_shoulder_corner");

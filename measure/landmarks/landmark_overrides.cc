@@ -1,12 +1,11 @@
 // The tailor's landmark override file (measure/landmarks/landmarks.h) and the
 // small LandmarkSet / LandmarkOptions members.
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
+#include "measure/catalogue/catalogue.h"
 #include "measure/landmarks/landmarks.h"
-#include "scanners/catalogue/catalogue.h"
 #include "scanners/core/errors.h"
 #include "scanners/core/json_io.h"
 #include "scanners/core/units.h"
@@ -44,7 +43,8 @@ namespace {
 
 // "scan" / "scanner" -> "scan"; "body" -> "body"; else InputError.
 std::string ParseFrame(const std::filesystem::path& file, const nlohmann::json& value) {
-  if (!value.is_string()) throw InputError(file, "\"frame\" must be a string (\"scan\" or \"body\")");
+  if (!value.is_string())
+    throw InputError(file, "\"frame\" must be a string (\"scan\" or \"body\")");
   const std::string frame = value.get<std::string>();
   if (frame == "scan" || frame == "scanner") return "scan";
   if (frame == "body") return "body";
@@ -73,8 +73,8 @@ LandmarkOverrides ReadLandmarkOverrides(const std::filesystem::path& file) {
   const Catalogue& catalogue = Catalogue::Builtin();
   for (const auto& [name, value] : document["landmarks"].items()) {
     if (!catalogue.HasLandmark(name)) {
-      throw InputError(file, "unknown landmark '" + name +
-                                 "' (names are the catalogue's, e.g. shoulder_right)");
+      throw InputError(
+          file, "unknown landmark '" + name + "' (names are the catalogue's, e.g. shoulder_right)");
     }
     try {
       overrides.points[name] = Vector3FromJson(value, "landmark " + name);

@@ -1,9 +1,9 @@
 // The landmark override file: parsing, errors that name the file, frames
 // and units.
+#include <gtest/gtest.h>
+
 #include <fstream>
 #include <string>
-
-#include <gtest/gtest.h>
 
 #include "measure/landmarks/landmarks.h"
 #include "scanners/core/errors.h"
@@ -112,8 +112,7 @@ TEST(LandmarkOverrides, ApplyIgnoresTheTransformInBodyFrame) {
   Eigen::Isometry3d body_from_scan = Eigen::Isometry3d::Identity();
   body_from_scan.translate(Eigen::Vector3d(100, 0, 0));
   ApplyLandmarkOverrides(overrides, body_from_scan, &set);
-  EXPECT_NEAR((set.At("knee_right").position_mm - Eigen::Vector3d(100, 10, 500)).norm(), 0.0,
-              1e-9);
+  EXPECT_NEAR((set.At("knee_right").position_mm - Eigen::Vector3d(100, 10, 500)).norm(), 0.0, 1e-9);
 }
 
 TEST(LandmarkSet, AtNamesTheLandmarkAndReason) {

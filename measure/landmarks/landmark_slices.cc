@@ -6,8 +6,8 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "measure/tape/convex_hull_2d.h"
 #include "scanners/core/cell_key.h"
-#include "scanners/truth/convex_hull_2d.h"
 
 namespace bespoke::landmarks {
 namespace {
@@ -97,8 +97,10 @@ std::vector<Slice> SliceCloud(const SliceOptions& options, const Eigen::MatrixX3
   for (int s = 0; s < count; ++s) {
     Slice& slice = slices[static_cast<size_t>(s)];
     slice.z = z0 + s * options.step_mm;
-    while (begin < order.size() && points(order[begin], 2) < slice.z - options.half_thickness_mm) ++begin;
-    for (size_t k = begin; k < order.size() && points(order[k], 2) <= slice.z + options.half_thickness_mm; ++k) {
+    while (begin < order.size() && points(order[begin], 2) < slice.z - options.half_thickness_mm)
+      ++begin;
+    for (size_t k = begin;
+         k < order.size() && points(order[k], 2) <= slice.z + options.half_thickness_mm; ++k) {
       slice.rows.push_back(order[k]);
     }
   }
@@ -122,14 +124,16 @@ double PieceGap(const Eigen::MatrixX3d& points, const Piece& a, const Piece& b) 
   double best = std::numeric_limits<double>::infinity();
   for (int i : a.rows) {
     const Eigen::Vector2d p = points.row(i).head<2>();
-    for (int j : b.rows) best = std::min(best, (points.row(j).head<2>().transpose() - p).squaredNorm());
+    for (int j : b.rows)
+      best = std::min(best, (points.row(j).head<2>().transpose() - p).squaredNorm());
   }
   return std::sqrt(best);
 }
 
 double HullPerimeter(const Eigen::MatrixX3d& points, const std::vector<int>& rows) {
   Eigen::MatrixX2d xy(static_cast<Eigen::Index>(rows.size()), 2);
-  for (size_t k = 0; k < rows.size(); ++k) xy.row(static_cast<Eigen::Index>(k)) = points.row(rows[k]).head<2>();
+  for (size_t k = 0; k < rows.size(); ++k)
+    xy.row(static_cast<Eigen::Index>(k)) = points.row(rows[k]).head<2>();
   return ConvexHullPerimeter(xy);
 }
 

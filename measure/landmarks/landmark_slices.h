@@ -11,29 +11,28 @@
 #ifndef BESPOKE_MEASURE_LANDMARKS_LANDMARK_SLICES_H_
 #define BESPOKE_MEASURE_LANDMARKS_LANDMARK_SLICES_H_
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 namespace bespoke::landmarks {
 
 struct Piece {
-  std::vector<int> rows;                           // rows of the cloud
-  Eigen::Vector2d lo = Eigen::Vector2d::Zero();    // min x, min y (mm)
-  Eigen::Vector2d hi = Eigen::Vector2d::Zero();    // max x, max y (mm)
+  std::vector<int> rows;                         // rows of the cloud
+  Eigen::Vector2d lo = Eigen::Vector2d::Zero();  // min x, min y (mm)
+  Eigen::Vector2d hi = Eigen::Vector2d::Zero();  // max x, max y (mm)
   Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
 };
 
 struct Slice {
-  double z = 0;             // plane height (mm)
-  std::vector<int> rows;    // every point of the slice
+  double z = 0;           // plane height (mm)
+  std::vector<int> rows;  // every point of the slice
   std::vector<Piece> pieces;
 };
 
 struct SliceOptions {
-  double step_mm = 5;             // default 5 mm: spacing of the slice planes
-  double half_thickness_mm = 4;   // default 4 mm: points within this of a plane
-  double link_mm = 12;            // default 12 mm: points closer than this (xy) are one piece
+  double step_mm = 5;            // default 5 mm: spacing of the slice planes
+  double half_thickness_mm = 4;  // default 4 mm: points within this of a plane
+  double link_mm = 12;           // default 12 mm: points closer than this (xy) are one piece
 };
 
 // Slices from the lowest to the highest point; slice i is at z_min + i * step.

@@ -32,7 +32,8 @@ bool SeamPoint(const Context& c, double z, bool front, Eigen::Vector3d* out, dou
       double middle = 0;
       for (int r : rows) middle += c.points(r, 1);
       middle /= static_cast<double>(rows.size());
-      for (double width : {std::min(2.5, half_width_mm), std::min(5.0, half_width_mm), half_width_mm}) {
+      for (double width :
+           {std::min(2.5, half_width_mm), std::min(5.0, half_width_mm), half_width_mm}) {
         double best = front ? -kInf : kInf;
         for (int r : rows) {
           const double y = c.points(r, 1);
@@ -55,7 +56,8 @@ void PutSeam(Context* c, const std::string& name, double z, bool front, double c
              const std::string& method) {
   Eigen::Vector3d p;
   if (!SeamPoint(*c, z, front, &p)) {
-    c->Missing(name, "no scan points on the centre line near z = " + std::to_string(static_cast<int>(z)) + " mm");
+    c->Missing(name, "no scan points on the centre line near z = " +
+                         std::to_string(static_cast<int>(z)) + " mm");
     return;
   }
   c->Put(name, p, confidence, method);
@@ -75,7 +77,8 @@ void FindCrownAndCrotch(Context* c) {
   }
   std::sort(top_z.rbegin(), top_z.rend());
   top_xy /= static_cast<double>(top_z.size());
-  c->Put("crown", Eigen::Vector3d(top_xy.x(), top_xy.y(), top_z[std::min<size_t>(2, top_z.size() - 1)]), 1.0,
+  c->Put("crown",
+         Eigen::Vector3d(top_xy.x(), top_xy.y(), top_z[std::min<size_t>(2, top_z.size() - 1)]), 1.0,
          "head_top");
   const double h = c->crown_z;
   // Crotch level: the lowest slice (above 30 % of stature) with one trunk
@@ -89,17 +92,22 @@ void FindCrownAndCrotch(Context* c) {
       if (p.lo.x() < -40 && p.hi.x() > 40 && p.rows.size() > 20) {
         bool crosses = false;
         for (int r : p.rows) crosses |= std::abs(c->points(r, 0)) < 10;
-        if (crosses) { level = s.z; break; }
+        if (crosses) {
+          level = s.z;
+          break;
+        }
       }
     }
     if (level > 0) break;
   }
-  if (level < 0) throw InputError("landmarks: no legs found (the trunk never splits into two legs)");
+  if (level < 0)
+    throw InputError("landmarks: no legs found (the trunk never splits into two legs)");
   // The crotch point: the lowest centre-line point near that level.
   int best = -1;
   for (int s = SliceAt(c->slices, level - 40); s <= SliceAt(c->slices, level + 10); ++s) {
     for (int r : c->slices[static_cast<size_t>(s)].rows) {
-      if (std::abs(c->points(r, 0)) < 10 && (best < 0 || c->points(r, 2) < c->points(best, 2))) best = r;
+      if (std::abs(c->points(r, 0)) < 10 && (best < 0 || c->points(r, 2) < c->points(best, 2)))
+        best = r;
     }
   }
   if (best >= 0 && c->points(best, 2) > level - 40) {
@@ -110,19 +118,23 @@ void FindCrownAndCrotch(Context* c) {
     std::vector<double> ys;
     for (int s = SliceAt(c->slices, level - 40); s <= SliceAt(c->slices, level + 10); ++s) {
       for (int r : c->slices[static_cast<size_t>(s)].rows) {
-        if (std::abs(c->points(r, 0)) < 10 && c->points(r, 2) < c->points(best, 2) + 8) ys.push_back(c->points(r, 1));
+        if (std::abs(c->points(r, 0)) < 10 && c->points(r, 2) < c->points(best, 2) + 8)
+          ys.push_back(c->points(r, 1));
       }
     }
     std::nth_element(ys.begin(), ys.begin() + static_cast<std::ptrdiff_t>(ys.size() / 2), ys.end());
     c->crotch_z = c->points(best, 2);
-    c->Put("crotch", Eigen::Vector3d(0, ys[ys.size() / 2], c->crotch_z), 0.7, "legs_join_lowest_centre_point");
+    c->Put("crotch", Eigen::Vector3d(0, ys[ys.size() / 2], c->crotch_z), 0.7,
+           "legs_join_lowest_centre_point");
   } else {
     // Nothing on the centre line: a hole under the crotch.
     const Slice& s = c->At(level);
     Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-    for (const Piece& p : s.pieces) if (p.lo.x() < -40 && p.hi.x() > 40) centre = p.centroid;
+    for (const Piece& p : s.pieces)
+      if (p.lo.x() < -40 && p.hi.x() > 40) centre = p.centroid;
     c->crotch_z = level - 0.5 * c->step;
-    c->Put("crotch", Eigen::Vector3d(0, centre.y(), c->crotch_z), 0.5, "legs_join_level", {"in_hole"});
+    c->Put("crotch", Eigen::Vector3d(0, centre.y(), c->crotch_z), 0.5, "legs_join_level",
+           {"in_hole"});
   }
 }
 
@@ -136,10 +148,14 @@ void Bust(Context* c, double* bust_z) {
   for (int sign : {+1, -1}) {
     const std::string name = "bust" + Side(sign);
     const ArmInfo& arm = c->arm[sign > 0 ? 0 : 1];
-    if (!arm.found) { c->Missing(name, "the armpit was not found"); continue; }
+    if (!arm.found) {
+      c->Missing(name, "the armpit was not found");
+      continue;
+    }
     const double ax = sign * arm.armpit.x();
     std::vector<int> candidates;
-    for (int s = SliceAt(c->slices, arm.armpit_z - 0.10 * h); s <= SliceAt(c->slices, arm.armpit_z - 0.02 * h); ++s) {
+    for (int s = SliceAt(c->slices, arm.armpit_z - 0.10 * h);
+         s <= SliceAt(c->slices, arm.armpit_z - 0.02 * h); ++s) {
       for (int r : c->TrunkRows(c->slices[static_cast<size_t>(s)])) {
         const double x = sign * c->points(r, 0);
         if (x > 0.3 * ax && x < ax) candidates.push_back(r);
@@ -147,8 +163,12 @@ void Bust(Context* c, double* bust_z) {
     }
     // Breasts point forward and a little outward: the extreme along a
     // direction turned ~11 deg out from straight ahead.
-    const int best = c->SmoothExtreme(candidates, Eigen::Vector3d(sign * 0.2, 1, 0).normalized(), 10, 4);
-    if (best < 0) { c->Missing(name, "no chest points below the armpit"); continue; }
+    const int best =
+        c->SmoothExtreme(candidates, Eigen::Vector3d(sign * 0.2, 1, 0).normalized(), 10, 4);
+    if (best < 0) {
+      c->Missing(name, "no chest points below the armpit");
+      continue;
+    }
     c->Put(name, c->P(best), 0.8, "front_max_below_armpit");
     if (sign > 0) *bust_z = c->points(best, 2);
   }
@@ -177,7 +197,8 @@ void FindTrunkLevels(Context* c) {
     const Eigen::Vector3d bust = c->Has("bust_right") ? c->Pos("bust_right") : c->Pos("bust_left");
     double best_bend = -kInf;
     for (double z = bust.z() - 0.08 * h; z < bust.z() - 0.01 * h; z += c->step) {
-      const double bend = FrontAt(*c, z + 10, bust.x()) - 2 * FrontAt(*c, z, bust.x()) + FrontAt(*c, z - 10, bust.x());
+      const double bend = FrontAt(*c, z + 10, bust.x()) - 2 * FrontAt(*c, z, bust.x()) +
+                          FrontAt(*c, z - 10, bust.x());
       if (std::isfinite(bend) && bend > best_bend) best_bend = bend, under_z = z;
     }
     // A flat chest (most men) has no clear fold: the noise's largest bend
@@ -232,11 +253,15 @@ void FindTrunkLevels(Context* c) {
     const std::vector<int> rows = c->TrunkRows(c->At(z));
     for (int sign : {+1, -1}) {
       const int side = c->SmoothExtreme(rows, Eigen::Vector3d(sign, 0, 0), 10, 3);
-      if (side < 0) { c->Missing(std::string(name) + Side(sign), "empty trunk section"); continue; }
+      if (side < 0) {
+        c->Missing(std::string(name) + Side(sign), "empty trunk section");
+        continue;
+      }
       Eigen::Vector3d p = c->P(side);
       p.z() = z;
       p.z() = z;
-      c->Put(std::string(name) + Side(sign), p, z == hip_z ? 0.85 : waist_confidence, "section_side_extreme");
+      c->Put(std::string(name) + Side(sign), p, z == hip_z ? 0.85 : waist_confidence,
+             "section_side_extreme");
     }
   }
 }

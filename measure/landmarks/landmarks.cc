@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "measure/catalogue/catalogue.h"
 #include "measure/landmarks/landmark_context.h"
-#include "scanners/catalogue/catalogue.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
@@ -105,7 +105,9 @@ std::vector<std::string> Both(std::initializer_list<const char*> names) {
 void CheckSymmetry(LandmarkSet* set) {
   for (auto& [name, right] : set->points) {
     const std::string suffix = "_right";
-    if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
+    if (name.size() <= suffix.size() ||
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+      continue;
     auto left = set->points.find(name.substr(0, name.size() - suffix.size()) + "_left");
     if (left == set->points.end()) continue;
     if (std::abs(left->second.position_mm.z() - right.position_mm.z()) > 40) {
@@ -120,7 +122,8 @@ void CheckSymmetry(LandmarkSet* set) {
 }  // namespace
 }  // namespace landmarks
 
-LandmarkSet DetectLandmarks(const LandmarkOptions& options, const PointCloud& cloud, Progress* progress) {
+LandmarkSet DetectLandmarks(const LandmarkOptions& options, const PointCloud& cloud,
+                            Progress* progress) {
   using namespace landmarks;
   options.Check();
   if (cloud.size() < 2000) {
@@ -148,8 +151,9 @@ LandmarkSet DetectLandmarks(const LandmarkOptions& options, const PointCloud& cl
        "side_waist_left", "middle_hip_front", "hip_back", "hip_right", "hip_left"});
   ProgressUpdate(progress, 1);
   Run(&c, FindNeckAndShoulders,
-      {"back_neck", "front_neck", "side_neck_right", "side_neck_left", "shoulder_right", "shoulder_left",
-       "axilla_front_right", "axilla_front_left", "axilla_back_right", "axilla_back_left"});
+      {"back_neck", "front_neck", "side_neck_right", "side_neck_left", "shoulder_right",
+       "shoulder_left", "axilla_front_right", "axilla_front_left", "axilla_back_right",
+       "axilla_back_left"});
   Run(&c, FindArms, Both({"upper_arm", "elbow", "wrist"}));
   Run(&c, FindLegs, Both({"thigh", "knee", "calf", "ankle_inside", "ankle_outside"}));
   ProgressUpdate(progress, 2);
@@ -163,8 +167,10 @@ LandmarkSet DetectLandmarks(const LandmarkOptions& options, const PointCloud& cl
   if (!options.only.empty()) {
     LandmarkSet some;
     for (const std::string& name : options.only) {
-      if (set.Has(name)) some.points[name] = set.points.at(name);
-      else some.missing[name] = set.missing.count(name) ? set.missing.at(name) : "not detected";
+      if (set.Has(name))
+        some.points[name] = set.points.at(name);
+      else
+        some.missing[name] = set.missing.count(name) ? set.missing.at(name) : "not detected";
     }
     set = std::move(some);
   }

@@ -1,12 +1,12 @@
 // Datum points (landmarks) of a person, found automatically on a cleaned,
 // body-framed scan, and the tailor's override file.
 //
-// Names are the catalogue's (scanners/catalogue/catalogue.json), with paired
+// Names are the catalogue's (measure/catalogue/catalogue.json), with paired
 // landmarks expanded to <name>_left / <name>_right (the person's own sides;
 // right is +x in the body frame). Definitions: docs/measurements.md; the
 // detection method of each point: docs/landmarks.md.
 //
-// Input: the cleaned cloud of measure/clean (body frame: mm, +z up, soles on
+// Input: the cleaned cloud of scanners/clean (body frame: mm, +z up, soles on
 // z = 0, facing +y), #P x 3, normals used when present. A person standing in
 // an A- or T-pose; holes from occlusion (armpits, crotch) are expected.
 // Output: one Landmark per name the detector could place. A point it cannot
@@ -17,13 +17,12 @@
 #ifndef BESPOKE_MEASURE_LANDMARKS_LANDMARKS_H_
 #define BESPOKE_MEASURE_LANDMARKS_LANDMARKS_H_
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
-#include <Eigen/Geometry>
 
 #include "scanners/core/progress.h"
 #include "scanners/core/types.h"
@@ -32,13 +31,13 @@ namespace bespoke {
 
 struct Landmark {
   Eigen::Vector3d position_mm = Eigen::Vector3d::Zero();  // body frame, on (or next to) the skin
-  double confidence = 1.0;         // 0..1; < 0.5 means "check this point"
+  double confidence = 1.0;                                // 0..1; < 0.5 means "check this point"
   std::vector<std::string> flags;  // e.g. "in_hole", "arm_touching_torso", "override"
   std::string method;              // short tag of how it was found, e.g. "slice_width_min"
 };
 
 struct LandmarkSet {
-  std::map<std::string, Landmark> points;     // catalogue names, paired ones expanded
+  std::map<std::string, Landmark> points;      // catalogue names, paired ones expanded
   std::map<std::string, std::string> missing;  // name -> why it could not be placed
   bool Has(const std::string& name) const { return points.count(name) > 0; }
   // InputError naming the landmark (and the reason when it is missing).
@@ -46,12 +45,12 @@ struct LandmarkSet {
 };
 
 struct LandmarkOptions {
-  double slice_step_mm = 5.0;  // default 5 mm: spacing of the horizontal slices profiled
+  double slice_step_mm = 5.0;            // default 5 mm: spacing of the horizontal slices profiled
   double slice_half_thickness_mm = 4.0;  // default 4 mm: points within this of a slice's plane
   // Landmark names to find (default empty = every catalogue landmark); lets
   // a caller that needs a few points skip the rest.
   std::vector<std::string> only;
-  void Check() const;             // InputError when out of range
+  void Check() const;  // InputError when out of range
 };
 
 // Finds every catalogue landmark it can on `cloud` (body frame, mm).

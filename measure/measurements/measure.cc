@@ -4,13 +4,13 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <exception>
 #include <limits>
 #include <map>
 #include <memory>
 #include <optional>
 #include <set>
 #include <thread>
-#include <exception>
 
 #include "scanners/core/errors.h"
 
@@ -36,13 +36,15 @@ std::string MissingReason(const MeasurementDef& m, const LandmarkSet& set) {
     for (const std::string& name : *list) {
       if (set.points.count(name)) continue;
       const auto why = set.missing.find(name);
-      return "no landmark '" + name + "'" + (why == set.missing.end() ? "" : " (" + why->second + ")");
+      return "no landmark '" + name + "'" +
+             (why == set.missing.end() ? "" : " (" + why->second + ")");
     }
   return "";
 }
 
 // Datum and axis points placed with doubt: "landmark_uncertain".
-void FlagUncertain(const MeasureOptions& o, const MeasurementDef& m, const LandmarkSet& set, Measurement* out) {
+void FlagUncertain(const MeasureOptions& o, const MeasurementDef& m, const LandmarkSet& set,
+                   Measurement* out) {
   std::set<std::string> seen;
   for (const auto* list : {&m.datum, &m.axis})
     for (const std::string& name : *list) {
@@ -67,7 +69,8 @@ bool ReachesPastDatum(const Eigen::MatrixX3d& part, const MeasurementDef& m, con
     const double x = Position(set, name).x();
     lo = std::min(lo, x), hi = std::max(hi, x);
   }
-  return part.rows() > 0 && (part.col(0).maxCoeff() > hi + margin_mm || part.col(0).minCoeff() < lo - margin_mm);
+  return part.rows() > 0 &&
+         (part.col(0).maxCoeff() > hi + margin_mm || part.col(0).minCoeff() < lo - margin_mm);
 }
 
 double DistanceToPoints(const Eigen::MatrixX3d& points, const Vec& x) {
@@ -80,8 +83,10 @@ Measurement Girth(const MeasureOptions& o, const MeasurementDef& m, const PointC
   Measurement out = Start(m);
   auto [point, normal] = GirthPlane(m, set);
   Eigen::MatrixX3d anchors(static_cast<Eigen::Index>(m.datum.size()), 3);
-  for (std::size_t i = 0; i < m.datum.size(); ++i) anchors.row(static_cast<Eigen::Index>(i)) = Position(set, m.datum[i]);
-  SectionGirth s = MeasureSectionGirth(o.section, cloud.points, cloud.normals, point, normal, anchors);
+  for (std::size_t i = 0; i < m.datum.size(); ++i)
+    anchors.row(static_cast<Eigen::Index>(i)) = Position(set, m.datum[i]);
+  SectionGirth s =
+      MeasureSectionGirth(o.section, cloud.points, cloud.normals, point, normal, anchors);
   while (m.arms == "lower" && out.lowered_mm + o.lower_step_mm <= o.max_lower_mm && s.points > 0 &&
          ReachesPastDatum(s.part, m, set, o.arms_margin_mm)) {
     point.z() -= o.lower_step_mm;
@@ -97,7 +102,8 @@ Measurement Girth(const MeasureOptions& o, const MeasurementDef& m, const PointC
     out.flags.push_back("datum_off_section");
   if (!m.arms.empty() && ReachesPastDatum(s.part, m, set, o.arms_margin_mm))
     out.flags.push_back("section_includes_arms");
-  if (m.side == "right" && s.part.col(0).minCoeff() <= 0) out.flags.push_back("section_crosses_midline");
+  if (m.side == "right" && s.part.col(0).minCoeff() <= 0)
+    out.flags.push_back("section_crosses_midline");
   if (o.keep_geometry) out.geometry = s.hull;
   return out;
 }
@@ -112,11 +118,10 @@ class PathCache {
     std::string error;
   };
   struct End {
-    Vec start;              // where the path starts on the scan
-    double bridge_mm = 0;   // straight bridge from there to the datum point
+    Vec start;             // where the path starts on the scan
+    double bridge_mm = 0;  // straight bridge from there to the datum point
     bool in_hole = false;
   };
-
 
  public:
   void Need(const std::string& a, const std::string& b) {
@@ -130,8 +135,8 @@ class PathCache {
   // field, the scan point p within max_bridge_mm of the datum point that
   // minimises geodesic(other, p) + |p - datum| (a tape bridging the crotch).
   // With both ends in holes, each bridges from its nearest scan point.
-  void Solve(CloudGeodesics& geodesics, const LandmarkSet& set, double tolerance_mm, double max_bridge_mm,
-             int threads, Progress* progress) {
+  void Solve(CloudGeodesics& geodesics, const LandmarkSet& set, double tolerance_mm,
+             double max_bridge_mm, int threads, Progress* progress) {
     for (const auto& pair : pending_)
       for (const std::string& name : {pair.first, pair.second}) {
         if (ends_.count(name)) continue;
@@ -149,12 +154,16 @@ class PathCache {
     while (!pending_.empty()) {
       std::map<std::string, int> degree;
       for (const auto& [a, b] : pending_) ++degree[a], ++degree[b];
-      const std::string source = std::max_element(degree.begin(), degree.end(), [](const auto& x, const auto& y) {
-                                   return x.second < y.second;
-                                 })->first;
+      const std::string source =
+          std::max_element(degree.begin(), degree.end(), [](const auto& x, const auto& y) {
+            return x.second < y.second;
+          })->first;
       groups.emplace_back(source, std::vector<std::pair<std::string, std::string>>());
       for (auto it = pending_.begin(); it != pending_.end();) {
-        if (it->first != source && it->second != source) { ++it; continue; }
+        if (it->first != source && it->second != source) {
+          ++it;
+          continue;
+        }
         groups.back().second.push_back(*it);
         it = pending_.erase(it);
       }
@@ -167,21 +176,27 @@ class PathCache {
     std::vector<std::size_t> load(static_cast<std::size_t>(workers), 0);
     std::vector<std::size_t> order(groups.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t x, std::size_t y) { return groups[x].second.size() > groups[y].second.size(); });
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+      return groups[x].second.size() > groups[y].second.size();
+    });
     for (std::size_t g : order) {
-      const auto w = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
+      const auto w =
+          static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
       assigned[w].push_back(g), load[w] += groups[g].second.size();
     }
-    std::vector<std::map<std::pair<std::string, std::string>, Entry>> results(static_cast<std::size_t>(workers));
+    std::vector<std::map<std::pair<std::string, std::string>, Entry>> results(
+        static_cast<std::size_t>(workers));
     std::vector<std::exception_ptr> errors(static_cast<std::size_t>(workers));
     auto work = [&](std::size_t w) {
       try {
         std::unique_ptr<CloudGeodesics> own;
-        if (w > 0) own = std::make_unique<CloudGeodesics>(geodesics.options(), geodesics.grid().index().points());
+        if (w > 0)
+          own = std::make_unique<CloudGeodesics>(geodesics.options(),
+                                                 geodesics.grid().index().points());
         CloudGeodesics& g = w > 0 ? *own : geodesics;
         for (std::size_t k : assigned[w])
-          for (const auto& pair : groups[k].second) results[w][pair] = SolvePair(g, set, groups[k].first, pair, max_bridge_mm);
+          for (const auto& pair : groups[k].second)
+            results[w][pair] = SolvePair(g, set, groups[k].first, pair, max_bridge_mm);
       } catch (...) {
         errors[w] = std::current_exception();
       }
@@ -207,13 +222,14 @@ class PathCache {
       const bool flip = from.in_hole && !to.in_hole;  // solve from the end on the scan
       if (flip) std::swap(from, to);
       if (to.in_hole && !from.in_hole)
-        to = BestExit(geodesics, from, set.points.at(flip ? source : target).position_mm, max_bridge_mm);
+        to = BestExit(geodesics, from, set.points.at(flip ? source : target).position_mm,
+                      max_bridge_mm);
       CloudGeodesicPath p = geodesics.Between(from.start, to.start);
       entry.length_mm = p.length_mm + from.bridge_mm + to.bridge_mm;
       const Vec& a = set.points.at(flip ? target : source).position_mm;
       const Vec& b = set.points.at(flip ? source : target).position_mm;
       Eigen::MatrixX3d points(p.points.rows() + 2, 3);
-      points << a.transpose(), p.points, b.transpose();  // from `a` to `b`
+      points << a.transpose(), p.points, b.transpose();     // from `a` to `b`
       const bool forward = (pair.first == source) != flip;  // stored from pair.first
       entry.points = forward ? points : Eigen::MatrixX3d(points.colwise().reverse());
     } catch (const InputError& e) {
@@ -223,15 +239,18 @@ class PathCache {
   }
 
   // Length and path from a to b; Skip when there is no path.
-  std::pair<double, Eigen::MatrixX3d> Get(const std::string& a, const std::string& b, const LandmarkSet& set) const {
+  std::pair<double, Eigen::MatrixX3d> Get(const std::string& a, const std::string& b,
+                                          const LandmarkSet& set) const {
     if (a == b) return {0.0, Eigen::MatrixX3d(Position(set, a).transpose())};
     const Entry& e = solved_.at(std::minmax(a, b));
-    if (!e.error.empty()) throw Skip{"no geodesic " + a + " -> " + b + " over the scan: " + e.error};
+    if (!e.error.empty())
+      throw Skip{"no geodesic " + a + " -> " + b + " over the scan: " + e.error};
     return {e.length_mm, a < b ? e.points : Eigen::MatrixX3d(e.points.colwise().reverse())};
   }
 
  private:
-  static End BestExit(CloudGeodesics& geodesics, const End& from, const Vec& datum, double max_bridge_mm) {
+  static End BestExit(CloudGeodesics& geodesics, const End& from, const Vec& datum,
+                      double max_bridge_mm) {
     const CloudDistanceField field = geodesics.DistancesFrom(from.start);
     const Eigen::MatrixX3d& points = geodesics.grid().index().points();
     End best{datum, 0, true};
@@ -241,7 +260,8 @@ class PathCache {
       const double bridge = (points.row(i).transpose() - datum).norm();
       if (bridge > max_bridge_mm || !std::isfinite(field.point_distance_mm(i))) continue;
       if (field.point_distance_mm(i) + bridge < cost)
-        cost = field.point_distance_mm(i) + bridge, best = {points.row(i).transpose(), bridge, true};
+        cost = field.point_distance_mm(i) + bridge,
+        best = {points.row(i).transpose(), bridge, true};
     }
     return best;
   }
@@ -284,12 +304,14 @@ Measurement Length(const MeasureOptions& o, const MeasurementDef& m, const Landm
     const Vec last = Position(set, m.datum.back());
     if (m.to_floor) {
       out.value_mm += last.z();
-      pieces.push_back((Eigen::MatrixX3d(2, 3) << last.transpose(), last.x(), last.y(), 0.0).finished());
+      pieces.push_back(
+          (Eigen::MatrixX3d(2, 3) << last.transpose(), last.x(), last.y(), 0.0).finished());
     }
     out.geometry = Stack(pieces);
     for (const std::string& name : m.datum) {
       double d2 = 0;
-      if (index && index->Nearest(Position(set, name), &d2) >= 0 && std::sqrt(d2) > o.datum_tolerance_mm) {
+      if (index && index->Nearest(Position(set, name), &d2) >= 0 &&
+          std::sqrt(d2) > o.datum_tolerance_mm) {
         out.flags.push_back("datum_off_scan");
         break;
       }
@@ -308,7 +330,8 @@ Measurement Height(const MeasureOptions& o, const MeasurementDef& m, const Landm
     out.value_mm -= Position(set, m.datum[1]).z();
     foot.z() = Position(set, m.datum[1]).z();
   }
-  if (o.keep_geometry) out.geometry = (Eigen::MatrixX3d(2, 3) << a.transpose(), foot.transpose()).finished();
+  if (o.keep_geometry)
+    out.geometry = (Eigen::MatrixX3d(2, 3) << a.transpose(), foot.transpose()).finished();
   return out;
 }
 
@@ -333,7 +356,8 @@ void MeasureOptions::Check() const {
   geodesics.Check();
   if (!(datum_tolerance_mm > 0)) throw InputError("measure: datum_tolerance_mm must be > 0");
   if (!(arms_margin_mm >= 0)) throw InputError("measure: arms_margin_mm must be >= 0");
-  if (!(lower_step_mm > 0) || !(max_lower_mm >= 0)) throw InputError("measure: need lower_step_mm > 0, max_lower_mm >= 0");
+  if (!(lower_step_mm > 0) || !(max_lower_mm >= 0))
+    throw InputError("measure: need lower_step_mm > 0, max_lower_mm >= 0");
   if (geodesic_threads < 1) throw InputError("measure: geodesic_threads must be >= 1");
   if (!(uncertain_confidence >= 0 && uncertain_confidence <= 1))
     throw InputError("measure: uncertain_confidence must be in [0, 1]");
@@ -345,7 +369,8 @@ const Measurement* MeasureResult::Find(const std::string& name) const {
   return nullptr;
 }
 
-std::pair<Eigen::Vector3d, Eigen::Vector3d> GirthPlane(const MeasurementDef& m, const LandmarkSet& set) {
+std::pair<Eigen::Vector3d, Eigen::Vector3d> GirthPlane(const MeasurementDef& m,
+                                                       const LandmarkSet& set) {
   if (m.method != MeasurementMethod::kSectionHull)
     throw InputError("'" + m.name + "' is not a girth measured on a section");
   try {
@@ -361,7 +386,8 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> GirthPlane(const MeasurementDef& m, 
         return {Position(set, m.datum[0]), axis.normalized()};
       }
       case GirthPlane::kThroughPoints: {
-        const Vec a = Position(set, m.datum[0]), b = Position(set, m.datum[1]), c = Position(set, m.datum[2]);
+        const Vec a = Position(set, m.datum[0]), b = Position(set, m.datum[1]),
+                  c = Position(set, m.datum[2]);
         const Vec normal = (b - a).cross(c - a);
         if (!(normal.norm() > 1e-9 * (b - a).squaredNorm()))
           throw InputError("'" + m.name + "': its three datum points are collinear");
@@ -376,17 +402,20 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> GirthPlane(const MeasurementDef& m, 
   throw InputError("'" + m.name + "' has no girth plane");
 }
 
-MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue, const PointCloud& body_cloud,
-                      const LandmarkSet& landmarks, Progress* progress) {
+MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue,
+                      const PointCloud& body_cloud, const LandmarkSet& landmarks,
+                      Progress* progress) {
   options.Check();
   if (body_cloud.empty()) throw InputError("measure: the cloud is empty");
   const auto start = std::chrono::steady_clock::now();
   MeasureResult result;
   std::vector<const MeasurementDef*> todo;
   PathCache paths;
-  for (const std::string& name : options.only) catalogue.Measurement(name);  // InputError when unknown
+  for (const std::string& name : options.only)
+    catalogue.Measurement(name);  // InputError when unknown
   for (const MeasurementDef& m : catalogue.measurements()) {
-    if (!options.only.empty() && std::find(options.only.begin(), options.only.end(), m.name) == options.only.end())
+    if (!options.only.empty() &&
+        std::find(options.only.begin(), options.only.end(), m.name) == options.only.end())
       continue;
     const std::string missing = MissingReason(m, landmarks);
     if (!missing.empty()) {
@@ -429,23 +458,28 @@ MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue,
     geodesics = std::make_unique<CloudGeodesics>(options.geodesics, body_cloud.points, progress);
     result.stages.push_back(grid_clock.Stop());
     StageClock path_clock("geodesics");
-    paths.Solve(*geodesics, landmarks, options.datum_tolerance_mm, options.max_bridge_mm, options.geodesic_threads,
-                progress);
+    paths.Solve(*geodesics, landmarks, options.datum_tolerance_mm, options.max_bridge_mm,
+                options.geodesic_threads, progress);
     result.stages.push_back(path_clock.Stop());
   }
   StageClock other_clock("lengths_heights");
   const PointIndex* index = geodesics ? &geodesics->grid().index() : nullptr;
   for (const MeasurementDef* m : todo) {
-    if (m->kind == MeasurementKind::kHeight) attempt(*m, [&] { return Height(options, *m, landmarks); });
-    else if (m->kind == MeasurementKind::kLength) attempt(*m, [&] { return Length(options, *m, landmarks, paths, index); });
+    if (m->kind == MeasurementKind::kHeight)
+      attempt(*m, [&] { return Height(options, *m, landmarks); });
+    else if (m->kind == MeasurementKind::kLength)
+      attempt(*m, [&] { return Length(options, *m, landmarks, paths, index); });
   }
   result.stages.push_back(other_clock.Stop());
 
   for (const MeasurementDef* m : todo) {  // catalogue order
-    if (done.count(m->name)) result.measurements.push_back(std::move(done.at(m->name)));
-    else result.skipped.emplace_back(m->name, failed.at(m->name));
+    if (done.count(m->name))
+      result.measurements.push_back(std::move(done.at(m->name)));
+    else
+      result.skipped.emplace_back(m->name, failed.at(m->name));
   }
-  result.total_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.total_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

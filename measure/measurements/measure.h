@@ -1,7 +1,7 @@
 // Tailoring measurements of a scanned person: every catalogue measurement
-// (scanners/catalogue) taken on the cleaned, body-framed point cloud from its
+// (measure/catalogue) taken on the cleaned, body-framed point cloud from its
 // datum points, with the same semantics as the exact reference measurements
-// of the oracle (scanners/truth/reference_measurements.h) so that the two can
+// of the oracle (oracle/truth/reference_measurements.h) so that the two can
 // be compared one to one (docs/measuring.md):
 //
 //   girth (section_hull)  MeasureSectionGirth (section_girth.h) in the
@@ -42,38 +42,38 @@
 #include <utility>
 #include <vector>
 
-#include "measure/geodesic/cloud_geodesics.h"
+#include "measure/catalogue/catalogue.h"
+#include "measure/cloud_geodesic/cloud_geodesics.h"
 #include "measure/landmarks/landmarks.h"
 #include "measure/measurements/section_girth.h"
-#include "scanners/catalogue/catalogue.h"
 #include "scanners/core/progress.h"
 #include "scanners/core/types.h"
 
 namespace bespoke {
 
 struct MeasureOptions {
-  SectionGirthOptions section;         // girth sections (defaults in section_girth.h)
-  CloudGeodesicsOptions geodesics;     // geodesic lengths (defaults in cloud_geodesics.h)
-  double datum_tolerance_mm = 20;      // default 20 mm: "datum_off_section" / "datum_off_scan"
-  double max_bridge_mm = 80;           // default 80 mm: a datum point this far in a scan hole is bridged
-  double arms_margin_mm = 30;          // default 30 mm: "section_includes_arms" beyond the datums' x
-  double lower_step_mm = 2;            // default 2 mm: arms "lower" plane step
-  double max_lower_mm = 100;           // default 100 mm: arms "lower" limit
-  double uncertain_confidence = 0.5;   // default 0.5: below it a landmark is "uncertain"
-  int geodesic_threads = 2;            // default 2: threads for the geodesic lengths (each
-                                       // beyond the first builds its own grid, ~0.3 s CPU)
-  bool keep_geometry = true;           // default true: hull loops and paths for rendering
-  std::vector<std::string> only;       // default empty = every catalogue measurement
-  void Check() const;                  // InputError when out of range
+  SectionGirthOptions section;      // girth sections (defaults in section_girth.h)
+  CloudGeodesicsOptions geodesics;  // geodesic lengths (defaults in cloud_geodesics.h)
+  double datum_tolerance_mm = 20;   // default 20 mm: "datum_off_section" / "datum_off_scan"
+  double max_bridge_mm = 80;   // default 80 mm: a datum point this far in a scan hole is bridged
+  double arms_margin_mm = 30;  // default 30 mm: "section_includes_arms" beyond the datums' x
+  double lower_step_mm = 2;    // default 2 mm: arms "lower" plane step
+  double max_lower_mm = 100;   // default 100 mm: arms "lower" limit
+  double uncertain_confidence = 0.5;  // default 0.5: below it a landmark is "uncertain"
+  int geodesic_threads = 2;           // default 2: threads for the geodesic lengths (each
+                                      // beyond the first builds its own grid, ~0.3 s CPU)
+  bool keep_geometry = true;          // default true: hull loops and paths for rendering
+  std::vector<std::string> only;      // default empty = every catalogue measurement
+  void Check() const;                 // InputError when out of range
 };
 
 struct Measurement {
   std::string name;
   MeasurementKind kind = MeasurementKind::kLength;
   MeasurementMethod method = MeasurementMethod::kGeodesic;
-  std::vector<std::string> datum;          // the catalogue's datum points
+  std::vector<std::string> datum;  // the catalogue's datum points
   double value_mm = 0;
-  std::vector<std::string> flags;          // quality flags (see above); empty when clean
+  std::vector<std::string> flags;  // quality flags (see above); empty when clean
   std::vector<std::string> uncertain_landmarks;
   // With keep_geometry: girth -> the hull polygon (#K x 3, closed implicitly);
   // geodesic -> the path (#K x 3, chain pieces concatenated); breadth and
@@ -81,12 +81,12 @@ struct Measurement {
   Eigen::MatrixX3d geometry;
   // Girths: the plane used (body frame, mm), lowered when arms "lower" moved it.
   Eigen::Vector3d plane_point = Eigen::Vector3d::Zero(), plane_normal = Eigen::Vector3d::Zero();
-  double lowered_mm = 0;                   // how far arms "lower" moved the plane
-  double largest_gap_mm = 0;               // girths: widest hole bridged by the hull
+  double lowered_mm = 0;      // how far arms "lower" moved the plane
+  double largest_gap_mm = 0;  // girths: widest hole bridged by the hull
 };
 
 struct MeasureStage {
-  std::string name;  // "girths", "geodesic_grid", "geodesics", "lengths_other"
+  std::string name;   // "girths", "geodesic_grid", "geodesics", "lengths_other"
   double time_s = 0;  // wall
   double cpu_s = 0;   // process CPU, all threads
 };
@@ -96,15 +96,16 @@ struct MeasureResult {
   std::vector<std::pair<std::string, std::string>> skipped;  // name, reason
   std::vector<MeasureStage> stages;
   double total_time_s = 0;
-  const Measurement* Find(const std::string& name) const;    // nullptr when absent
+  const Measurement* Find(const std::string& name) const;  // nullptr when absent
 };
 
-MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue, const PointCloud& body_cloud,
-                      const LandmarkSet& landmarks, Progress* progress = nullptr);
+MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue,
+                      const PointCloud& body_cloud, const LandmarkSet& landmarks,
+                      Progress* progress = nullptr);
 
 // The girth plane (point, unit normal; body frame, mm) of a section_hull
 // measurement for these landmarks; the same rules as GirthPlaneOf in
-// scanners/truth. InputError when a landmark is missing or the plane is
+// oracle/truth. InputError when a landmark is missing or the plane is
 // degenerate.
 std::pair<Eigen::Vector3d, Eigen::Vector3d> GirthPlane(const MeasurementDef& measurement,
                                                        const LandmarkSet& landmarks);

@@ -6,19 +6,23 @@ namespace {
 Rgb ColourOf(const Measurement& m) {
   if (!m.flags.empty()) return {235, 130, 20};
   switch (m.method) {
-    case MeasurementMethod::kSectionHull: return {210, 30, 30};
-    case MeasurementMethod::kGeodesic: return {20, 90, 220};
+    case MeasurementMethod::kSectionHull:
+      return {210, 30, 30};
+    case MeasurementMethod::kGeodesic:
+      return {20, 90, 220};
     case MeasurementMethod::kBreadth:
-    case MeasurementMethod::kPointToLine: return {30, 150, 60};
-    case MeasurementMethod::kHeight: break;
+    case MeasurementMethod::kPointToLine:
+      return {30, 150, 60};
+    case MeasurementMethod::kHeight:
+      break;
   }
   return {120, 120, 120};
 }
 
 }  // namespace
 
-RgbImage RenderMeasurements(const PointCloud& body_cloud, const LandmarkSet& landmarks, const MeasureResult& result,
-                            int height_px) {
+RgbImage RenderMeasurements(const PointCloud& body_cloud, const LandmarkSet& landmarks,
+                            const MeasureResult& result, int height_px) {
   RenderScene scene;
   scene.cloud = &body_cloud;
   for (const auto& [name, l] : landmarks.points) {

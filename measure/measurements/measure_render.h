@@ -20,11 +20,12 @@
 
 namespace bespoke {
 
-RgbImage RenderMeasurements(const PointCloud& body_cloud, const LandmarkSet& landmarks, const MeasureResult& result,
-                            int height_px = 900);
+RgbImage RenderMeasurements(const PointCloud& body_cloud, const LandmarkSet& landmarks,
+                            const MeasureResult& result, int height_px = 900);
 
 void WriteMeasureRender(const std::filesystem::path& file, const PointCloud& body_cloud,
-                        const LandmarkSet& landmarks, const MeasureResult& result, int height_px = 900);
+                        const LandmarkSet& landmarks, const MeasureResult& result,
+                        int height_px = 900);
 
 }  // namespace bespoke
 

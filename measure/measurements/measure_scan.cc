@@ -22,21 +22,24 @@ void CheckOne(const std::filesystem::path& file, const char* extension, const ch
 }  // namespace
 
 FoundLandmarks FindLandmarks(const LandmarkOptions& options, const PointCloud& body_cloud,
-                             const Eigen::Isometry3d& body_from_scanner, const std::filesystem::path& overrides,
-                             Progress* progress) {
+                             const Eigen::Isometry3d& body_from_scanner,
+                             const std::filesystem::path& overrides, Progress* progress) {
   const auto wall = std::chrono::steady_clock::now();
   const std::clock_t cpu = std::clock();
   FoundLandmarks found;
   LandmarkOverrides read;
-  if (!overrides.empty()) read = ReadLandmarkOverrides(overrides);  // bad file: fail before detecting
+  if (!overrides.empty())
+    read = ReadLandmarkOverrides(overrides);  // bad file: fail before detecting
   try {
     found.set = DetectLandmarks(options, body_cloud, progress);
   } catch (const InputError& e) {
     if (overrides.empty()) throw;
-    found.warnings.push_back(std::string("landmark detection failed, using the override file only: ") + e.what());
+    found.warnings.push_back(
+        std::string("landmark detection failed, using the override file only: ") + e.what());
   }
   if (!overrides.empty()) ApplyLandmarkOverrides(read, body_from_scanner, &found.set);
-  found.stage.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count();
+  found.stage.time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count();
   found.stage.cpu_s = static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC;
   return found;
 }
@@ -50,16 +53,20 @@ void CheckMeasureOutputs(const MeasureOutputs& o) {
   CheckOne(o.render, ".png", "render");
 }
 
-std::vector<std::filesystem::path> WriteMeasureOutputs(const MeasureOutputs& o, const PointCloud& body_cloud,
-                                                       const LandmarkSet& landmarks, const MeasureResult& result,
+std::vector<std::filesystem::path> WriteMeasureOutputs(const MeasureOutputs& o,
+                                                       const PointCloud& body_cloud,
+                                                       const LandmarkSet& landmarks,
+                                                       const MeasureResult& result,
                                                        const nlohmann::json& extra) {
   CheckMeasureOutputs(o);
   std::vector<std::filesystem::path> written;
   const Catalogue& catalogue = Catalogue::Builtin();
   if (!o.csv.empty()) WriteMeasurementsCsv(o.csv, result), written.push_back(o.csv);
   if (!o.vit.empty()) WriteValentinaVit(o.vit, result, catalogue), written.push_back(o.vit);
-  if (!o.freesewing.empty()) WriteFreeSewingJson(o.freesewing, result, catalogue), written.push_back(o.freesewing);
-  if (!o.render.empty()) WriteMeasureRender(o.render, body_cloud, landmarks, result), written.push_back(o.render);
+  if (!o.freesewing.empty())
+    WriteFreeSewingJson(o.freesewing, result, catalogue), written.push_back(o.freesewing);
+  if (!o.render.empty())
+    WriteMeasureRender(o.render, body_cloud, landmarks, result), written.push_back(o.render);
   // The document last: when it exists, everything it lists was written.
   WriteMeasurementDocument(o.json, MeasurementDocument(result, landmarks, extra, o.geometry));
   written.push_back(o.json);
@@ -67,7 +74,9 @@ std::vector<std::filesystem::path> WriteMeasureOutputs(const MeasureOutputs& o, 
 }
 
 nlohmann::json ToJson(const LandmarkOptions& o) {
-  return {{"slice_step_mm", o.slice_step_mm}, {"slice_half_thickness_mm", o.slice_half_thickness_mm}, {"only", o.only}};
+  return {{"slice_step_mm", o.slice_step_mm},
+          {"slice_half_thickness_mm", o.slice_half_thickness_mm},
+          {"only", o.only}};
 }
 
 }  // namespace bespoke

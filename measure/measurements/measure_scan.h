@@ -18,10 +18,9 @@
 
 #include <Eigen/Geometry>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "measure/landmarks/landmarks.h"
 #include "measure/measurements/measure.h"
@@ -52,8 +51,10 @@ void CheckMeasureOutputs(const MeasureOutputs& outputs);
 
 // Writes every requested output; `extra` goes into the JSON document
 // (MeasurementDocument). Returns the files written, in order.
-std::vector<std::filesystem::path> WriteMeasureOutputs(const MeasureOutputs& outputs, const PointCloud& body_cloud,
-                                                       const LandmarkSet& landmarks, const MeasureResult& result,
+std::vector<std::filesystem::path> WriteMeasureOutputs(const MeasureOutputs& outputs,
+                                                       const PointCloud& body_cloud,
+                                                       const LandmarkSet& landmarks,
+                                                       const MeasureResult& result,
                                                        const nlohmann::json& extra);
 
 // The landmark options as written under "settings".

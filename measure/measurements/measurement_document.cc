@@ -11,11 +11,14 @@ namespace {
 
 double Round2(double x) { return std::round(x * 100.0) / 100.0; }
 
-nlohmann::json Point(const Eigen::Vector3d& p) { return {Round2(p.x()), Round2(p.y()), Round2(p.z())}; }
+nlohmann::json Point(const Eigen::Vector3d& p) {
+  return {Round2(p.x()), Round2(p.y()), Round2(p.z())};
+}
 
 nlohmann::json MeasurementJson(const Measurement& m, bool with_geometry) {
-  nlohmann::json j = {{"name", m.name},         {"kind", ToString(m.kind)}, {"value_mm", Round2(m.value_mm)},
-                      {"flags", m.flags},       {"method", ToString(m.method)}, {"datum", m.datum}};
+  nlohmann::json j = {
+      {"name", m.name},   {"kind", ToString(m.kind)},     {"value_mm", Round2(m.value_mm)},
+      {"flags", m.flags}, {"method", ToString(m.method)}, {"datum", m.datum}};
   if (!m.uncertain_landmarks.empty()) j["uncertain_landmarks"] = m.uncertain_landmarks;
   if (m.kind == MeasurementKind::kGirth) {
     j["largest_gap_mm"] = Round2(m.largest_gap_mm);
@@ -24,7 +27,8 @@ nlohmann::json MeasurementJson(const Measurement& m, bool with_geometry) {
   }
   if (with_geometry) {
     nlohmann::json g = nlohmann::json::array();
-    for (Eigen::Index i = 0; i < m.geometry.rows(); ++i) g.push_back(Point(m.geometry.row(i).transpose()));
+    for (Eigen::Index i = 0; i < m.geometry.rows(); ++i)
+      g.push_back(Point(m.geometry.row(i).transpose()));
     j["geometry"] = std::move(g);
   }
   return j;
@@ -48,8 +52,11 @@ std::string CsvField(const std::string& s) {
 
 nlohmann::json MeasurementDocument(const MeasureResult& result, const LandmarkSet& landmarks,
                                    const nlohmann::json& extra, bool with_geometry) {
-  nlohmann::json doc = {{"format", "bespoke-measurements"}, {"version", 1}, {"units", "mm"},
-                        {"frame", "body"},                  {"source", "scan"}};
+  nlohmann::json doc = {{"format", "bespoke-measurements"},
+                        {"version", 1},
+                        {"units", "mm"},
+                        {"frame", "body"},
+                        {"source", "scan"}};
   nlohmann::json points = nlohmann::json::object(), details = nlohmann::json::object();
   for (const auto& [name, l] : landmarks.points) {
     points[name] = Point(l.position_mm);
@@ -59,10 +66,12 @@ nlohmann::json MeasurementDocument(const MeasureResult& result, const LandmarkSe
   doc["landmark_details"] = std::move(details);
   doc["landmarks_missing"] = landmarks.missing;
   nlohmann::json measurements = nlohmann::json::array();
-  for (const Measurement& m : result.measurements) measurements.push_back(MeasurementJson(m, with_geometry));
+  for (const Measurement& m : result.measurements)
+    measurements.push_back(MeasurementJson(m, with_geometry));
   doc["measurements"] = std::move(measurements);
   nlohmann::json skipped = nlohmann::json::array();
-  for (const auto& [name, reason] : result.skipped) skipped.push_back({{"name", name}, {"reason", reason}});
+  for (const auto& [name, reason] : result.skipped)
+    skipped.push_back({{"name", name}, {"reason", reason}});
   doc["skipped"] = std::move(skipped);
   nlohmann::json timings = nlohmann::json::array();
   if (extra.contains("timings") && extra["timings"].is_array()) timings = extra["timings"];
@@ -103,8 +112,8 @@ std::string MeasurementsCsv(const MeasureResult& result) {
   char value[64];
   for (const Measurement& m : result.measurements) {
     std::snprintf(value, sizeof(value), "%.2f", m.value_mm);
-    out += CsvField(m.name) + "," + ToString(m.kind) + "," + ToString(m.method) + "," + value + "," +
-           CsvField(Joined(m.flags)) + "," + CsvField(Joined(m.datum)) + "\n";
+    out += CsvField(m.name) + "," + ToString(m.kind) + "," + ToString(m.method) + "," + value +
+           "," + CsvField(Joined(m.flags)) + "," + CsvField(Joined(m.datum)) + "\n";
   }
   return out;
 }

@@ -26,9 +26,8 @@
 #define BESPOKE_MEASURE_MEASUREMENTS_MEASUREMENT_DOCUMENT_H_
 
 #include <filesystem>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "measure/landmarks/landmarks.h"
 #include "measure/measurements/measure.h"

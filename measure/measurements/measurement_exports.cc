@@ -8,9 +8,7 @@
 #include "scanners/core/xml_escape.h"
 
 namespace bespoke {
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 std::string ValentinaVit(const MeasureResult& result, const Catalogue& catalogue) {
   std::string out =
@@ -40,8 +38,8 @@ std::string ValentinaVit(const MeasureResult& result, const Catalogue& catalogue
       description += "; flags:";
       for (const std::string& f : m.flags) description += " " + f;
     }
-    out += "        <m name=\"" + XmlEscape(def.valentina) + "\" value=\"" + value + "\" description=\"" +
-           XmlEscape(description) + "\" full_name=\"\"/>\n";
+    out += "        <m name=\"" + XmlEscape(def.valentina) + "\" value=\"" + value +
+           "\" description=\"" + XmlEscape(description) + "\" full_name=\"\"/>\n";
   }
   out += "    </body-measurements>\n</vit>\n";
   return out;
@@ -51,12 +49,14 @@ nlohmann::json FreeSewingMeasurements(const MeasureResult& result, const Catalog
   nlohmann::json measurements = nlohmann::json::object();
   for (const Measurement& m : result.measurements) {
     const MeasurementDef& def = catalogue.Measurement(m.name);
-    if (!def.freesewing.empty()) measurements[def.freesewing] = std::round(m.value_mm * 10.0) / 10.0;
+    if (!def.freesewing.empty())
+      measurements[def.freesewing] = std::round(m.value_mm * 10.0) / 10.0;
   }
   return {{"units", "metric"}, {"measurements", measurements}};
 }
 
-void WriteValentinaVit(const std::filesystem::path& file, const MeasureResult& result, const Catalogue& catalogue) {
+void WriteValentinaVit(const std::filesystem::path& file, const MeasureResult& result,
+                       const Catalogue& catalogue) {
   WriteFileAtomically(file, ValentinaVit(result, catalogue));
 }
 

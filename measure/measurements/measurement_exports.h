@@ -17,19 +17,19 @@
 #define BESPOKE_MEASURE_MEASUREMENTS_MEASUREMENT_EXPORTS_H_
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
+#include "measure/catalogue/catalogue.h"
 #include "measure/measurements/measure.h"
-#include "scanners/catalogue/catalogue.h"
 
 namespace bespoke {
 
 std::string ValentinaVit(const MeasureResult& result, const Catalogue& catalogue);
 nlohmann::json FreeSewingMeasurements(const MeasureResult& result, const Catalogue& catalogue);
 
-void WriteValentinaVit(const std::filesystem::path& file, const MeasureResult& result, const Catalogue& catalogue);
+void WriteValentinaVit(const std::filesystem::path& file, const MeasureResult& result,
+                       const Catalogue& catalogue);
 void WriteFreeSewingJson(const std::filesystem::path& file, const MeasureResult& result,
                          const Catalogue& catalogue);
 

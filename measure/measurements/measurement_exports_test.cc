@@ -48,8 +48,8 @@ LandmarkSet Landmarks() {
 }
 
 TEST(MeasurementDocument, FollowsTheContract) {
-  const nlohmann::json doc =
-      MeasurementDocument(Sample(), Landmarks(), {{"settings", {{"x", 1}}}, {"timings", {{{"name", "read"}}}}});
+  const nlohmann::json doc = MeasurementDocument(
+      Sample(), Landmarks(), {{"settings", {{"x", 1}}}, {"timings", {{{"name", "read"}}}}});
   EXPECT_EQ(doc["format"], "bespoke-measurements");
   EXPECT_EQ(doc["version"], 1);
   EXPECT_EQ(doc["units"], "mm");
@@ -70,7 +70,8 @@ TEST(MeasurementDocument, FollowsTheContract) {
   ASSERT_EQ(doc["timings"].size(), 2u);  // the caller's first, then Measure's
   EXPECT_EQ(doc["timings"][0]["name"], "read");
   EXPECT_EQ(doc["timings"][1]["name"], "girths");
-  const nlohmann::json with = MeasurementDocument(Sample(), Landmarks(), nlohmann::json::object(), true);
+  const nlohmann::json with =
+      MeasurementDocument(Sample(), Landmarks(), nlohmann::json::object(), true);
   EXPECT_EQ(with["measurements"][0]["geometry"].size(), 4u);
 
   const testing::TempDir dir;
@@ -102,7 +103,10 @@ bool WellFormed(const std::string& xml) {
       i = semi + 1;
       continue;
     }
-    if (xml[i] != '<') { ++i; continue; }
+    if (xml[i] != '<') {
+      ++i;
+      continue;
+    }
     const std::size_t end = xml.find('>', i);
     if (end == std::string::npos) return false;
     const std::string tag = xml.substr(i + 1, end - i - 1);
@@ -129,7 +133,9 @@ TEST(MeasurementExports, ValentinaVitIsWellFormedInCentimetres) {
   EXPECT_NE(vit.find("<m name=\"height\" value=\"166.00\""), std::string::npos);
   EXPECT_NE(vit.find("flags: section_open"), std::string::npos);
   const std::regex entry("<m name=\"[a-z_]+\" value=\"[0-9.]+\"");
-  EXPECT_EQ(std::distance(std::sregex_iterator(vit.begin(), vit.end(), entry), std::sregex_iterator()), 3);
+  EXPECT_EQ(
+      std::distance(std::sregex_iterator(vit.begin(), vit.end(), entry), std::sregex_iterator()),
+      3);
   EXPECT_TRUE(WellFormed("<a><b/></a>"));
   EXPECT_FALSE(WellFormed("<a><b></a>"));
 }

@@ -1,5 +1,6 @@
 #include "measure/measurements/section_girth.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,9 +8,9 @@
 #include <unordered_map>
 #include <vector>
 
+#include "measure/tape/convex_hull_2d.h"
 #include "scanners/core/cell_key.h"
 #include "scanners/core/errors.h"
-#include "scanners/truth/convex_hull_2d.h"
 
 namespace bespoke {
 namespace {
@@ -42,9 +43,11 @@ std::vector<int> Cluster(const std::vector<Vec2>& p, double gap, int* count) {
   const auto key = [](long long x, long long y) { return CellKey2(x, y); };
   std::unordered_map<long long, std::vector<int>> cells;
   for (std::size_t i = 0; i < p.size(); ++i)
-    cells[key(std::llround(std::floor(p[i].x() / gap)), std::llround(std::floor(p[i].y() / gap)))].push_back(static_cast<int>(i));
+    cells[key(std::llround(std::floor(p[i].x() / gap)), std::llround(std::floor(p[i].y() / gap)))]
+        .push_back(static_cast<int>(i));
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const long long cx = std::llround(std::floor(p[i].x() / gap)), cy = std::llround(std::floor(p[i].y() / gap));
+    const long long cx = std::llround(std::floor(p[i].x() / gap)),
+                    cy = std::llround(std::floor(p[i].y() / gap));
     for (long long dx = -1; dx <= 1; ++dx)
       for (long long dy = -1; dy <= 1; ++dy) {
         const auto it = cells.find(key(cx + dx, cy + dy));
@@ -107,7 +110,8 @@ double OwnAngularGapDeg(const std::vector<Vec2>& p) {
   std::vector<bool> hit(kBins, false);
   for (const Vec2& x : p) hit[BinOf(x - c)] = true;
   int best = 0, run = 0;
-  for (int k = 0; k < 2 * kBins; ++k) run = hit[k % kBins] ? 0 : run + 1, best = std::max(best, std::min(run, kBins));
+  for (int k = 0; k < 2 * kBins; ++k)
+    run = hit[k % kBins] ? 0 : run + 1, best = std::max(best, std::min(run, kBins));
   return best * 360.0 / kBins;
 }
 
@@ -131,14 +135,15 @@ Occupancy Occupy(const std::vector<Vec2>& p, const Vec2& centre) {
 // True when `piece` continues the part's loop across a hole: it lies mostly
 // in the part's empty bins, and at both ends its radius matches the radius
 // of the part's nearest occupied bins.
-bool ContinuesLoop(const SectionGirthOptions& options, const std::vector<Vec2>& piece, const Occupancy& part,
-                   const Vec2& centre) {
+bool ContinuesLoop(const SectionGirthOptions& options, const std::vector<Vec2>& piece,
+                   const Occupancy& part, const Vec2& centre) {
   const Occupancy own = Occupy(piece, centre);
   int inside = 0, total = 0;
   for (int b = 0; b < kBins; ++b) {
     if (!own.count[b]) continue;
     total += own.count[b];
-    if (part.count[b] || part.count[(b + 1) % kBins] || part.count[(b + kBins - 1) % kBins]) inside += own.count[b];
+    if (part.count[b] || part.count[(b + 1) % kBins] || part.count[(b + kBins - 1) % kBins])
+      inside += own.count[b];
   }
   if (inside > 0.2 * total) return false;
   // The piece's angular extent: the complement of its widest empty run.
@@ -163,7 +168,8 @@ bool ContinuesLoop(const SectionGirthOptions& options, const std::vector<Vec2>& 
   auto matches = [&](double r, double expected) {
     return std::abs(r - expected) <= options.radius_tolerance * expected;
   };
-  return matches(own.radius[first], part.radius[before]) && matches(own.radius[last], part.radius[after]);
+  return matches(own.radius[first], part.radius[before]) &&
+         matches(own.radius[last], part.radius[after]);
 }
 
 // The mean point of each angular bin of about smooth_arc_mm of arc.
@@ -177,7 +183,8 @@ std::vector<Vec2> Denoise(const std::vector<Vec2>& p, const Vec2& centre, double
   for (const Vec2& x : p) {
     const Vec2 d = x - centre;
     const double a = std::atan2(d.y(), d.x()) + kTwoPi / 2;
-    const auto b = static_cast<std::size_t>(std::min(bins - 1, static_cast<int>(a / kTwoPi * bins)));
+    const auto b =
+        static_cast<std::size_t>(std::min(bins - 1, static_cast<int>(a / kTwoPi * bins)));
     sum[b] += x, ++n[b];
   }
   std::vector<Vec2> out;
@@ -190,7 +197,8 @@ double LargestGap(const std::vector<Vec2>& p, const Vec2& centre) {
   if (p.size() < 2) return 0;
   std::vector<std::pair<double, int>> order;
   for (std::size_t i = 0; i < p.size(); ++i)
-    order.emplace_back(std::atan2(p[i].y() - centre.y(), p[i].x() - centre.x()), static_cast<int>(i));
+    order.emplace_back(std::atan2(p[i].y() - centre.y(), p[i].x() - centre.x()),
+                       static_cast<int>(i));
   std::sort(order.begin(), order.end());
   double gap = 0;
   for (std::size_t i = 0; i < order.size(); ++i)
@@ -214,7 +222,9 @@ void SectionGirthOptions::Check() const {
 }
 
 SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen::MatrixX3d& cloud,
-                                 const Eigen::MatrixX3d& normals, const Eigen::Vector3d& plane_point, const Eigen::Vector3d& plane_normal,
+                                 const Eigen::MatrixX3d& normals,
+                                 const Eigen::Vector3d& plane_point,
+                                 const Eigen::Vector3d& plane_normal,
                                  const Eigen::MatrixX3d& anchors) {
   options.Check();
   if (std::abs(plane_normal.norm() - 1) > 1e-6 || !plane_point.allFinite())
@@ -247,17 +257,20 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
 
   std::vector<int> label = Cluster(slab, options.piece_gap_mm, &out.pieces);
   std::vector<std::vector<Vec2>> pieces(static_cast<std::size_t>(out.pieces));
-  for (std::size_t i = 0; i < slab.size(); ++i) pieces[static_cast<std::size_t>(label[i])].push_back(slab[i]);
+  for (std::size_t i = 0; i < slab.size(); ++i)
+    pieces[static_cast<std::size_t>(label[i])].push_back(slab[i]);
   std::size_t largest = 0;
   for (const auto& piece : pieces) largest = std::max(largest, piece.size());
   auto usable = [&](const std::vector<Vec2>& piece) {
-    return piece.size() >= std::min<std::size_t>(static_cast<std::size_t>(options.min_piece_points), largest);
+    return piece.size() >=
+           std::min<std::size_t>(static_cast<std::size_t>(options.min_piece_points), largest);
   };
 
   // The seed piece.
   int seed = -1;
   Vec2 centroid = Vec2::Zero();
-  for (Eigen::Index a = 0; a < anchors.rows(); ++a) centroid += frame.To2d(anchors.row(a).transpose());
+  for (Eigen::Index a = 0; a < anchors.rows(); ++a)
+    centroid += frame.To2d(anchors.row(a).transpose());
   centroid /= static_cast<double>(anchors.rows());
   if (anchors.rows() > 1)
     for (std::size_t k = 0; k < pieces.size() && seed < 0; ++k)
@@ -293,7 +306,8 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
     }
     if (pick >= 0) {
       taken[static_cast<std::size_t>(pick)] = true;
-      part.insert(part.end(), pieces[static_cast<std::size_t>(pick)].begin(), pieces[static_cast<std::size_t>(pick)].end());
+      part.insert(part.end(), pieces[static_cast<std::size_t>(pick)].begin(),
+                  pieces[static_cast<std::size_t>(pick)].end());
       ++out.pieces_joined;
       grew = true;
     }
@@ -302,7 +316,8 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
   const Vec2 centre = Mean(part);
   out.largest_gap_mm = LargestGap(part, centre);
   out.open = out.largest_gap_mm > options.open_gap_mm;
-  const std::vector<Vec2> outline = options.smooth_arc_mm > 0 ? Denoise(part, centre, options.smooth_arc_mm) : part;
+  const std::vector<Vec2> outline =
+      options.smooth_arc_mm > 0 ? Denoise(part, centre, options.smooth_arc_mm) : part;
   const Eigen::MatrixX2d m = ToMatrix(outline);
   const std::vector<int> hull = ConvexHullIndices(m);
   out.hull.resize(static_cast<Eigen::Index>(hull.size()), 3);

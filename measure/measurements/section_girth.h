@@ -27,10 +27,10 @@
 // `open` is set when, going round the part by angle, two consecutive points
 // are more than open_gap_mm apart: the hull bridged a scan hole there.
 //
-// Input: #P x 3 cloud (body frame, mm), #P x 3 unit normals or 0 x 3, a plane (point, unit normal), #D x 3
-// anchors (D >= 1). Output: SectionGirth (mm). Failure: InputError for bad
-// options or a non-unit normal; a plane that misses the cloud gives
-// `points == 0` and girth 0 (the caller flags or skips it), never a throw.
+// Input: #P x 3 cloud (body frame, mm), #P x 3 unit normals or 0 x 3, a plane (point, unit normal),
+// #D x 3 anchors (D >= 1). Output: SectionGirth (mm). Failure: InputError for bad options or a
+// non-unit normal; a plane that misses the cloud gives `points == 0` and girth 0 (the caller flags
+// or skips it), never a throw.
 #ifndef BESPOKE_MEASURE_MEASUREMENTS_SECTION_GIRTH_H_
 #define BESPOKE_MEASURE_MEASUREMENTS_SECTION_GIRTH_H_
 
@@ -43,27 +43,30 @@ struct SectionGirthOptions {
   double max_slide_mm = 4.0;       // default 4 mm: longest slide along the surface onto the plane
   double piece_gap_mm = 12.0;      // default 12 mm: 2-D points closer than this are one piece
   double bridge_gap_mm = 150.0;    // default 150 mm: widest hole a loop is joined across
-  double radius_tolerance = 0.25;  // default 0.25: an arc's radius may differ this share from the loop's
-  double open_gap_mm = 30.0;       // default 30 mm: a longer gap between neighbours marks the loop open
-  double smooth_arc_mm = 6.0;      // default 6 mm: angular bin width of the denoising mean (0 = off)
-  int min_piece_points = 4;        // default 4: smaller pieces are noise (unless nothing else)
-  void Check() const;              // InputError when out of range
+  double radius_tolerance =
+      0.25;                   // default 0.25: an arc's radius may differ this share from the loop's
+  double open_gap_mm = 30.0;  // default 30 mm: a longer gap between neighbours marks the loop open
+  double smooth_arc_mm = 6.0;  // default 6 mm: angular bin width of the denoising mean (0 = off)
+  int min_piece_points = 4;    // default 4: smaller pieces are noise (unless nothing else)
+  void Check() const;          // InputError when out of range
 };
 
 struct SectionGirth {
-  double girth_mm = 0;             // hull perimeter of the part
-  Eigen::MatrixX3d hull;           // #K x 3 hull polygon on the plane (closed implicitly), mm
-  Eigen::MatrixX3d part;           // #Q x 3 the part's slab points projected onto the plane, mm
-  Eigen::Index points = 0;         // slab points (all pieces)
-  int pieces = 0;                  // pieces in the slab
-  int pieces_joined = 0;           // pieces joined to the seed across holes
-  double largest_gap_mm = 0;       // widest gap between angular neighbours of the part
-  bool open = false;               // largest_gap_mm > open_gap_mm
-  bool anchor_enclosed = false;    // the seed was chosen by enclosing the anchors' centroid
+  double girth_mm = 0;           // hull perimeter of the part
+  Eigen::MatrixX3d hull;         // #K x 3 hull polygon on the plane (closed implicitly), mm
+  Eigen::MatrixX3d part;         // #Q x 3 the part's slab points projected onto the plane, mm
+  Eigen::Index points = 0;       // slab points (all pieces)
+  int pieces = 0;                // pieces in the slab
+  int pieces_joined = 0;         // pieces joined to the seed across holes
+  double largest_gap_mm = 0;     // widest gap between angular neighbours of the part
+  bool open = false;             // largest_gap_mm > open_gap_mm
+  bool anchor_enclosed = false;  // the seed was chosen by enclosing the anchors' centroid
 };
 
 SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen::MatrixX3d& cloud,
-                                 const Eigen::MatrixX3d& normals, const Eigen::Vector3d& plane_point, const Eigen::Vector3d& plane_normal,
+                                 const Eigen::MatrixX3d& normals,
+                                 const Eigen::Vector3d& plane_point,
+                                 const Eigen::Vector3d& plane_normal,
                                  const Eigen::MatrixX3d& anchors);
 
 }  // namespace bespoke

@@ -27,8 +27,8 @@ struct Prism {
 // Unit normals of the last Sample()d points, parallel to `points`.
 std::vector<Eigen::Vector3d> g_normals;
 
-void Sample(const Prism& prism, double spacing, const std::function<bool(double)>& keep, double noise_mm,
-            std::vector<Eigen::Vector3d>* out, std::uint32_t seed = 1) {
+void Sample(const Prism& prism, double spacing, const std::function<bool(double)>& keep,
+            double noise_mm, std::vector<Eigen::Vector3d>* out, std::uint32_t seed = 1) {
   if (out->empty()) g_normals.clear();
   std::mt19937 rng(seed);
   std::normal_distribution<double> n(0, 1);
@@ -47,7 +47,8 @@ void Sample(const Prism& prism, double spacing, const std::function<bool(double)
 }
 
 Prism Circle(double r, double cx = 0, double cy = 0) {
-  return {[=](double t) { return Eigen::Vector2d(cx + r * std::cos(t), cy + r * std::sin(t)); }, 2 * kPi * r};
+  return {[=](double t) { return Eigen::Vector2d(cx + r * std::cos(t), cy + r * std::sin(t)); },
+          2 * kPi * r};
 }
 
 Prism Ellipse(double a, double b, double cx = 0) {
@@ -96,10 +97,12 @@ TEST(SectionGirth, TiltedPlaneThroughACylinderIsAnEllipse) {
   const double truth = Ellipse(50 / std::cos(tilt), 50).perimeter_mm;
   SectionGirthOptions raw;
   raw.smooth_arc_mm = 0;
-  const SectionGirth g = MeasureSectionGirth(raw, ToMatrix(cloud), ToMatrix(g_normals), kPlane, normal, anchor);
+  const SectionGirth g =
+      MeasureSectionGirth(raw, ToMatrix(cloud), ToMatrix(g_normals), kPlane, normal, anchor);
   EXPECT_NEAR(g.girth_mm, truth, 1.0);  // mm
   // Projected without normals, the slab's sloping surface pushes the hull out.
-  const SectionGirth flat = MeasureSectionGirth(raw, ToMatrix(cloud), Eigen::MatrixX3d(0, 3), kPlane, normal, anchor);
+  const SectionGirth flat =
+      MeasureSectionGirth(raw, ToMatrix(cloud), Eigen::MatrixX3d(0, 3), kPlane, normal, anchor);
   EXPECT_GT(flat.girth_mm - truth, 2.0);  // mm
 }
 
@@ -116,7 +119,8 @@ TEST(SectionGirth, HoleSplittingTheLoopIsBridged) {
   const double arc = 150 * 20 * kPi / 180, chord = 2 * 150 * std::sin(10 * kPi / 180);
   EXPECT_EQ(g.pieces, 2);
   EXPECT_EQ(g.pieces_joined, 1);
-  EXPECT_NEAR(g.girth_mm, 2 * kPi * 150 - 2 * (arc - chord), 2.0);  // mm (chord ends sampled 4 mm apart)
+  EXPECT_NEAR(g.girth_mm, 2 * kPi * 150 - 2 * (arc - chord),
+              2.0);  // mm (chord ends sampled 4 mm apart)
   EXPECT_TRUE(g.open);
   EXPECT_GT(g.largest_gap_mm, 45);
 }
@@ -164,10 +168,12 @@ TEST(SectionGirth, HipWithTheHandsShadowStillExcludesTheHand) {
   for (bool whole_hand : {true, false}) {
     std::vector<Eigen::Vector3d> cloud;
     Sample(hip, 4, hip_keep, 0, &cloud);
-    Sample(Circle(40, 250), 4, whole_hand ? std::function<bool(double)>(All) : outer_half, 0, &cloud);
+    Sample(Circle(40, 250), 4, whole_hand ? std::function<bool(double)>(All) : outer_half, 0,
+           &cloud);
     const SectionGirth g = Girth(cloud, HipAnchors());
     EXPECT_LT(g.part.col(0).maxCoeff(), 190) << "whole hand " << whole_hand;
-    EXPECT_NEAR(g.girth_mm, hip.perimeter_mm - arc + chord, 2.0) << "whole hand " << whole_hand;  // mm
+    EXPECT_NEAR(g.girth_mm, hip.perimeter_mm - arc + chord, 2.0)
+        << "whole hand " << whole_hand;  // mm
     EXPECT_TRUE(g.open);
   }
 }
@@ -180,21 +186,23 @@ TEST(SectionGirth, SmoothingRemovesTheNoiseBias) {
   const SectionGirth raw = Girth(cloud, Eigen::RowVector3d(150, 0, 100), off);
   const SectionGirth denoised = Girth(cloud, Eigen::RowVector3d(150, 0, 100));  // default 6 mm bins
   const double truth = 2 * kPi * 150;
-  EXPECT_GT(raw.girth_mm - truth, 4.0);                      // mm: the hull rides the noise outwards
-  EXPECT_LT(std::abs(denoised.girth_mm - truth), 3.0);       // mm
+  EXPECT_GT(raw.girth_mm - truth, 4.0);                 // mm: the hull rides the noise outwards
+  EXPECT_LT(std::abs(denoised.girth_mm - truth), 3.0);  // mm
 }
 
 TEST(SectionGirth, EmptySlabAndBadOptions) {
   std::vector<Eigen::Vector3d> cloud;
   Sample(Circle(150), 4, All, 0, &cloud);
   const SectionGirth g =
-      MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), Eigen::Vector3d(0, 0, 900), kUp, Eigen::RowVector3d(0, 0, 900));
+      MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), Eigen::Vector3d(0, 0, 900), kUp,
+                          Eigen::RowVector3d(0, 0, 900));
   EXPECT_EQ(g.points, 0);
   EXPECT_EQ(g.girth_mm, 0);
   SectionGirthOptions bad;
   bad.half_thickness_mm = 0;
   EXPECT_THROW(Girth(cloud, Eigen::RowVector3d(150, 0, 100), bad), InputError);
-  EXPECT_THROW(MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), kPlane, Eigen::Vector3d(0, 0, 2), Eigen::RowVector3d(0, 0, 0)),
+  EXPECT_THROW(MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), kPlane,
+                                   Eigen::Vector3d(0, 0, 2), Eigen::RowVector3d(0, 0, 0)),
                InputError);
 }
 

@@ -16,23 +16,23 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // three edges apart in the mesh graph: the flowed path does not jump between
 // parts of the surface that are close in space but apart over the surface
 // (lips, eyelids, fingers), where the two vertices are many edges apart.
-bool OnSurface(const MeshSurface& surface, const Eigen::MatrixX3d& path,
-               std::vector<int>* hints) {
+bool OnSurface(const MeshSurface& surface, const Eigen::MatrixX3d& path, std::vector<int>* hints) {
   auto& h = *hints;
   std::vector<int> ring;
   surface.NearestVertex(path.row(0).transpose(), &h[0]);  // the flow's hints may be stale
   for (size_t i = 1; i < h.size(); ++i) {
     surface.NearestVertex(path.row(static_cast<Eigen::Index>(i)).transpose(), &h[i]);
-    if (h[i] == h[i - 1] || std::find(surface.neighbours_begin(h[i - 1]),
-                                      surface.neighbours_end(h[i - 1]),
-                                      h[i]) != surface.neighbours_end(h[i - 1]))
+    if (h[i] == h[i - 1] ||
+        std::find(surface.neighbours_begin(h[i - 1]), surface.neighbours_end(h[i - 1]), h[i]) !=
+            surface.neighbours_end(h[i - 1]))
       continue;
     ring.assign(1, h[i - 1]);
     bool near = false;
     for (size_t begin = 0, depth = 0; depth < 3 && !near; ++depth) {
       const size_t end = ring.size();
       for (size_t k = begin; k < end && !near; ++k)
-        for (const int* u = surface.neighbours_begin(ring[k]); u != surface.neighbours_end(ring[k]); ++u) {
+        for (const int* u = surface.neighbours_begin(ring[k]); u != surface.neighbours_end(ring[k]);
+             ++u) {
           if (*u == h[i]) {
             near = true;
             break;
@@ -49,7 +49,8 @@ bool OnSurface(const MeshSurface& surface, const Eigen::MatrixX3d& path,
 }  // namespace
 
 void MeshGeodesicsOptions::Check() const {
-  if (window < 3) throw InputError("mesh geodesics: window must be >= 3, got " + std::to_string(window));
+  if (window < 3)
+    throw InputError("mesh geodesics: window must be >= 3, got " + std::to_string(window));
   auto positive = [](double x) { return x > 0 && std::isfinite(x); };
   if (!(band_edges >= 0) || !std::isfinite(band_edges))
     throw InputError("mesh geodesics: band_edges must be >= 0");
@@ -72,8 +73,8 @@ MeshGeodesics::MeshGeodesics(const MeshGeodesicsOptions& options, const MeshSurf
                                          " is out of range (the mesh has " + std::to_string(n) +
                                          " vertices)");
   if (!surface.used(source))
-    throw InputError(surface.name(), "source vertex " + std::to_string(source) +
-                                         " is used by no face");
+    throw InputError(surface.name(),
+                     "source vertex " + std::to_string(source) + " is used by no face");
   const double edge = surface.mean_edge_length();
   flow_.max_iterations = options_.flow_iterations;
   flow_.tolerance_mm = options_.flow_tolerance_edges * edge;
@@ -90,7 +91,8 @@ MeshGeodesics::MeshGeodesics(const MeshGeodesicsOptions& options, const MeshSurf
   windows_.resize(size);
   open_.resize(size);
   for (int v = 0; v < n; ++v)
-    open_[static_cast<size_t>(v)] = static_cast<int>(surface.neighbours_end(v) - surface.neighbours_begin(v));
+    open_[static_cast<size_t>(v)] =
+        static_cast<int>(surface.neighbours_end(v) - surface.neighbours_begin(v));
   Sample s;
   s.point = surface.position(source);
   s.hint = source;
@@ -117,7 +119,8 @@ MeshGeodesics::Choice MeshGeodesics::ChooseParent(int v) const {
   Candidate found[64];
   int count = 0;
   double best = kInf;
-  for (const int* l = surface_.neighbours_begin(v); l != surface_.neighbours_end(v) && count < 64; ++l) {
+  for (const int* l = surface_.neighbours_begin(v); l != surface_.neighbours_end(v) && count < 64;
+       ++l) {
     const int u = *l;
     if (!settled(u)) continue;
     const Eigen::Vector3d e = site - surface_.position(u);
@@ -180,7 +183,8 @@ void MeshGeodesics::Settle(int v, int parent) {
     Eigen::MatrixX3d part = path_.bottomRows(tail);
     std::vector<int> part_hints(hints_.end() - tail, hints_.end());
     std::vector<TangentPlane> part_planes(planes_.end() - tail, planes_.end());
-    const CurvatureFlowReport report = FlowPolyline(flow_, surface_, &part, &part_hints, &part_planes);
+    const CurvatureFlowReport report =
+        FlowPolyline(flow_, surface_, &part, &part_hints, &part_planes);
     ++stats_.flows;
     stats_.flow_iterations += report.iterations;
     if (!report.converged) ++stats_.unconverged;
@@ -210,7 +214,8 @@ void MeshGeodesics::Settle(int v, int parent) {
     const Eigen::Vector3d* before = drop > 0 ? &pw[static_cast<size_t>(drop - 1)].point : nullptr;
     const ProjectedPath proj = ProjectPolyline(surface_, path_, &hints, before, false);
     stats_.projection_fallbacks += proj.fallbacks;
-    for (int i = 1; i < m; ++i) window[size_t(i)].projected = first.projected + proj.cumulative[size_t(i)];
+    for (int i = 1; i < m; ++i)
+      window[size_t(i)].projected = first.projected + proj.cumulative[size_t(i)];
   }
   // Eq 3.20-3.24: the kink left at the held first sample of the window.
   double bound = bound_[size_t(parent)];
@@ -223,7 +228,8 @@ void MeshGeodesics::Settle(int v, int parent) {
       out -= n.dot(out) / n.squaredNorm() * n;
     }
     const double length = window.back().arc - first.arc;
-    const double sine = in.norm() > 0 && out.norm() > 0 ? in.cross(out).norm() / (in.norm() * out.norm()) : 0;
+    const double sine =
+        in.norm() > 0 && out.norm() > 0 ? in.cross(out).norm() / (in.norm() * out.norm()) : 0;
     const double y_max = 0.5 * length * sine;
     bound += std::sqrt(length * length + 4 * y_max * y_max) - length;
   }
@@ -248,7 +254,8 @@ void MeshGeodesics::Settle(int v, int parent) {
 }
 
 void MeshGeodesics::Run(int target, Progress* progress) {
-  if (target >= surface_.num_vertices()) throw InputError("mesh geodesics: target vertex out of range");
+  if (target >= surface_.num_vertices())
+    throw InputError("mesh geodesics: target vertex out of range");
   if (done_ || (target >= 0 && settled(target))) return;
   const double band = options_.band_edges * surface_.mean_edge_length();
   ProgressBegin(progress, "propagating mesh geodesics", surface_.num_vertices());

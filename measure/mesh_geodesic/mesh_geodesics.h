@@ -8,7 +8,7 @@
 // takes as parent the settled neighbour whose path continues straightest into
 // it among those predicting (nearly) the shortest distance, inherits the
 // parent's path plus its own position (no backtracing), and the geodesic
-// curvature flow (measure/geodesic/curvature_flow.h, Eq 3.12-3.17, tangent
+// curvature flow (measure/mesh_geodesic/curvature_flow.h, Eq 3.12-3.17, tangent
 // planes from PCA of one-ring face normals: mesh_surface.h) straightens
 //   - Algorithm 3: the last `window` samples, the first held fixed;
 //   - Algorithm 2 (`whole_path`): the whole path, source held fixed.
@@ -35,33 +35,33 @@
 #include <cstdint>
 #include <vector>
 
-#include "measure/geodesic/curvature_flow.h"
+#include "measure/mesh_geodesic/curvature_flow.h"
 #include "measure/mesh_geodesic/mesh_surface.h"
 #include "scanners/core/progress.h"
 
 namespace bespoke {
 
 struct MeshGeodesicsOptions {
-  int window = 30;           // w, samples flowed per new vertex (Algorithm 3); default 30
-  bool whole_path = false;   // Algorithm 2: flow every whole path; default off
-  bool project = true;       // Algorithm 1 projected distances; default on
-  bool keep_paths = false;   // keep every window so Path() works; default off
-  double band_edges = 0.5;   // r_max grows by this many mean edge lengths; default 0.5
-  double tie_edges = 0.05;   // parent ties within this many mean edges; default 0.05
-  int flow_iterations = 6;   // flow iterations per vertex; default 6
+  int window = 30;          // w, samples flowed per new vertex (Algorithm 3); default 30
+  bool whole_path = false;  // Algorithm 2: flow every whole path; default off
+  bool project = true;      // Algorithm 1 projected distances; default on
+  bool keep_paths = false;  // keep every window so Path() works; default off
+  double band_edges = 0.5;  // r_max grows by this many mean edge lengths; default 0.5
+  double tie_edges = 0.05;  // parent ties within this many mean edges; default 0.05
+  int flow_iterations = 6;  // flow iterations per vertex; default 6
   double flow_tolerance_edges = 0.002;  // flow converged below this move; default 0.002 edges
-  double replan_edges = 0.1;  // planes re-estimated after a slide of 0.1 edges (default)
-  void Check() const;         // InputError when out of range
+  double replan_edges = 0.1;            // planes re-estimated after a slide of 0.1 edges (default)
+  void Check() const;                   // InputError when out of range
 };
 
 struct MeshGeodesicsStats {
-  std::int64_t settled = 0;          // vertices with a geodesic
-  std::int64_t flows = 0;            // curvature-flow solves
-  std::int64_t flow_iterations = 0;  // their iterations in total
-  std::int64_t unconverged = 0;      // solves that hit flow_iterations
-  std::int64_t held_samples = 0;     // flows undone (left the surface or cut a gap)
+  std::int64_t settled = 0;               // vertices with a geodesic
+  std::int64_t flows = 0;                 // curvature-flow solves
+  std::int64_t flow_iterations = 0;       // their iterations in total
+  std::int64_t unconverged = 0;           // solves that hit flow_iterations
+  std::int64_t held_samples = 0;          // flows undone (left the surface or cut a gap)
   std::int64_t projection_fallbacks = 0;  // projected segments measured as chords
-  std::int64_t rounds = 0;           // times r_max grew
+  std::int64_t rounds = 0;                // times r_max grew
   std::int64_t peak_window_samples = 0;   // most samples stored at once
 };
 

@@ -9,10 +9,10 @@
 #include <cmath>
 
 #include "measure/mesh_geodesic/path_projection.h"
-#include "measure/mesh_geodesic/testing/test_meshes.h"
+#include "oracle/truth/exact_geodesics.h"
 #include "scanners/core/errors.h"
 #include "scanners/io/scan_io.h"
-#include "scanners/truth/exact_geodesics.h"
+#include "tests/support/test_meshes.h"
 #include "tests/support/test_support.h"
 
 namespace bespoke {
@@ -93,7 +93,8 @@ TEST(MeshGeodesics, SphereAgainstCgalExactAndGreatCircles) {
   const MeshGeodesics approx = Solve(surface, 0, false);
   const MeshGeodesics accurate = Solve(surface, 0, true);
   const Errors a = Compare(approx, surface.num_vertices(), floor, [&](int v) { return truth[v]; });
-  const Errors b = Compare(accurate, surface.num_vertices(), floor, [&](int v) { return truth[v]; });
+  const Errors b =
+      Compare(accurate, surface.num_vertices(), floor, [&](int v) { return truth[v]; });
   EXPECT_LT(a.mean_projected, 0.005);
   EXPECT_LT(b.mean_projected, 0.002);
   EXPECT_LT(a.mean_offset, 0.005);

@@ -92,7 +92,8 @@ MeshSurface::MeshSurface(const MeshPrepOptions& options, const TriangleMesh& mes
                                " degenerate faces (repeated vertex or zero area) dropped");
   mesh_.vertices = mesh.vertices;
   mesh_.faces.resize(static_cast<Eigen::Index>(keep.size()), 3);
-  for (size_t i = 0; i < keep.size(); ++i) mesh_.faces.row(static_cast<Eigen::Index>(i)) = mesh.faces.row(keep[i]);
+  for (size_t i = 0; i < keep.size(); ++i)
+    mesh_.faces.row(static_cast<Eigen::Index>(i)) = mesh.faces.row(keep[i]);
   BuildAdjacency();
   ComputeNormalsAndComponents();
 }
@@ -103,7 +104,8 @@ void MeshSurface::BuildAdjacency() {
   vertex_face_start_.assign(static_cast<size_t>(nv) + 1, 0);
   for (size_t f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) ++vertex_face_start_[static_cast<size_t>(mesh_.faces(f, k)) + 1];
-  std::partial_sum(vertex_face_start_.begin(), vertex_face_start_.end(), vertex_face_start_.begin());
+  std::partial_sum(vertex_face_start_.begin(), vertex_face_start_.end(),
+                   vertex_face_start_.begin());
   vertex_faces_.resize(3 * nf);
   std::vector<std::int64_t> fill(vertex_face_start_.begin(), vertex_face_start_.end() - 1);
   for (size_t f = 0; f < nf; ++f)
@@ -263,9 +265,10 @@ MeshFoot MeshSurface::ClosestPoint(const Eigen::Vector3d& x, int* hint) const {
   MeshFoot foot;
   double best = std::numeric_limits<double>::infinity();
   for (const int* f = faces_begin(v); f != faces_end(v); ++f) {
-    const Eigen::Vector3d p = ClosestOnTriangle(x, mesh_.vertices.row(mesh_.faces(*f, 0)).transpose(),
-                                                mesh_.vertices.row(mesh_.faces(*f, 1)).transpose(),
-                                                mesh_.vertices.row(mesh_.faces(*f, 2)).transpose());
+    const Eigen::Vector3d p =
+        ClosestOnTriangle(x, mesh_.vertices.row(mesh_.faces(*f, 0)).transpose(),
+                          mesh_.vertices.row(mesh_.faces(*f, 1)).transpose(),
+                          mesh_.vertices.row(mesh_.faces(*f, 2)).transpose());
     const double d = (p - x).squaredNorm();
     if (d < best) {
       best = d;
@@ -307,7 +310,8 @@ std::int64_t MeshSurface::memory_bytes() const {
   return mesh_.vertices.size() * 8 + mesh_.faces.size() * 4 +
          static_cast<std::int64_t>(neighbour_start_.size() + vertex_face_start_.size()) * 8 +
          static_cast<std::int64_t>(neighbours_.size() + vertex_faces_.size() + adjacent_.size() +
-                                   component_.size()) * 4 +
+                                   component_.size()) *
+             4 +
          static_cast<std::int64_t>(normal_.size()) * 24;
 }
 

@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-#include "measure/geodesic/curvature_flow.h"
+#include "measure/mesh_geodesic/curvature_flow.h"
 #include "scanners/core/types.h"
 
 namespace bespoke {

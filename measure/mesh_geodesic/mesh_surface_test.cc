@@ -9,8 +9,8 @@
 #include <cmath>
 
 #include "measure/mesh_geodesic/mesh_geodesics.h"
-#include "measure/mesh_geodesic/testing/test_meshes.h"
 #include "scanners/core/errors.h"
+#include "tests/support/test_meshes.h"
 
 namespace bespoke {
 namespace {
@@ -70,8 +70,8 @@ TEST(MeshSurface, DropsDegenerateFacesAndKeepsDistances) {
   const TriangleMesh grid = testing::FlatGrid(12, 12, 10, 0);
   TriangleMesh mesh = grid;
   mesh.faces.conservativeResize(mesh.num_faces() + 2, 3);
-  mesh.faces.row(mesh.num_faces() - 2) << 5, 5, 6;    // repeated vertex
-  mesh.faces.row(mesh.num_faces() - 1) << 0, 1, 2;    // zero area (collinear)
+  mesh.faces.row(mesh.num_faces() - 2) << 5, 5, 6;  // repeated vertex
+  mesh.faces.row(mesh.num_faces() - 1) << 0, 1, 2;  // zero area (collinear)
   const MeshSurface surface(MeshPrepOptions{}, mesh, "m");
   EXPECT_EQ(surface.report().dropped_faces, 2);
   EXPECT_EQ(surface.mesh().num_faces(), grid.num_faces());
@@ -83,8 +83,8 @@ TEST(MeshSurface, DropsDegenerateFacesAndKeepsDistances) {
 }
 
 TEST(MeshSurface, UnreferencedVerticesAndOtherComponentsAreUnreachable) {
-  TriangleMesh mesh = Append(testing::FlatGrid(6, 6, 10, 0), testing::FlatGrid(5, 5, 10, 0),
-                             {200, 0, 0});
+  TriangleMesh mesh =
+      Append(testing::FlatGrid(6, 6, 10, 0), testing::FlatGrid(5, 5, 10, 0), {200, 0, 0});
   mesh.vertices.conservativeResize(mesh.num_vertices() + 1, 3);
   mesh.vertices.bottomRows(1) << 0, 0, 50;  // used by no face
   const MeshSurface surface(MeshPrepOptions{}, mesh, "m");
@@ -110,7 +110,7 @@ TEST(MeshSurface, HandlesBowTieVerticesAndFlippedFaces) {
   for (Eigen::Index f = 0; f < mesh.num_faces(); ++f)
     for (int k = 0; k < 3; ++k)
       if (mesh.faces(f, k) == 25) mesh.faces(f, k) = 24;  // b's corner (0,0) is a's (4,4)
-  mesh.faces.row(3).reverseInPlace();  // a flipped face
+  mesh.faces.row(3).reverseInPlace();                     // a flipped face
   const MeshSurface surface(MeshPrepOptions{}, mesh, "m");
   EXPECT_EQ(surface.report().non_manifold_vertices, 1);
   EXPECT_GT(surface.report().misoriented_edges, 0);
@@ -133,8 +133,8 @@ TEST(MeshSurface, PcaNormalsAreRadialOnASphere) {
   TangentPlane plane;
   const Eigen::Vector3d x = Eigen::Vector3d(1, 2, 3).normalized() * 101;
   ASSERT_TRUE(surface.PlaneAt(x, &hint, &plane));
-  EXPECT_NEAR(plane.point.norm(), 100, 0.5);               // on the faces
-  EXPECT_GT(plane.normal.dot(x.normalized()), 0.999);      // radial
+  EXPECT_NEAR(plane.point.norm(), 100, 0.5);           // on the faces
+  EXPECT_GT(plane.normal.dot(x.normalized()), 0.999);  // radial
 }
 
 }  // namespace

@@ -82,18 +82,26 @@ std::vector<ScanEntry> ScansToRun(const BatchOptions& options, const std::vector
       }
       continue;
     }
-    spdlog::info("{}: redoing ({})", entry.id,
-                 record ? (record->status == "failed" ? "failed before" : "input changed") : problem);
+    spdlog::info(
+        "{}: redoing ({})", entry.id,
+        record ? (record->status == "failed" ? "failed before" : "input changed") : problem);
     todo.push_back(entry);
   }
   return todo;
 }
 
 json SettingsJson(const BatchOptions& o, int jobs) {
-  return {{"input", o.input.string()},  {"out_dir", o.out_dir.string()}, {"jobs", jobs},
-          {"design", o.design},         {"units", o.units},              {"resume", o.resume},
-          {"retry_failed", o.retry_failed}, {"recursive", o.recursive},
-          {"shard", o.shard.ToString()}, {"timeout_s", o.timeout_s},     {"memory_mb", o.memory_mb}};
+  return {{"input", o.input.string()},
+          {"out_dir", o.out_dir.string()},
+          {"jobs", jobs},
+          {"design", o.design},
+          {"units", o.units},
+          {"resume", o.resume},
+          {"retry_failed", o.retry_failed},
+          {"recursive", o.recursive},
+          {"shard", o.shard.ToString()},
+          {"timeout_s", o.timeout_s},
+          {"memory_mb", o.memory_mb}};
 }
 
 }  // namespace
@@ -113,9 +121,7 @@ void BatchOptions::Check() const {
   if (retry_failed && !resume) throw InputError("--retry-failed needs --resume");
 }
 
-int BatchOutcome::ExitCode() const {
-  return interrupted ? 128 + signal : counts.ExitCode();
-}
+int BatchOutcome::ExitCode() const { return interrupted ? 128 + signal : counts.ExitCode(); }
 
 int AvailableCpus() {
   if (const char* env = std::getenv("SLURM_CPUS_PER_TASK")) {
@@ -138,7 +144,9 @@ BatchOutcome RunBatch(const BatchOptions& options, Progress* progress) {
   std::set<std::string> ids;
   for (const ScanEntry& e : all) ids.insert(e.id);
   for (const char* reserved : {"attempts", "shards", "report"}) {
-    if (ids.count(reserved)) throw InputError(options.input, std::string("a scan may not be named '") + reserved + "' (reserved output folder)");
+    if (ids.count(reserved))
+      throw InputError(options.input, std::string("a scan may not be named '") + reserved +
+                                          "' (reserved output folder)");
   }
   Plan plan{options.shard, options.input.string(), SelectShard(all, options.shard),
             static_cast<int>(all.size())};
@@ -147,8 +155,9 @@ BatchOutcome RunBatch(const BatchOptions& options, Progress* progress) {
   CreateDirectories(outcome.results_dir);
   FolderLock lock(outcome.results_dir);
   if (!options.resume && fs::exists(outcome.results_dir / kPlanFileName)) {
-    throw InputError(options.out_dir, "already holds a batch; pass --resume to continue it, or "
-                                      "choose another output folder");
+    throw InputError(options.out_dir,
+                     "already holds a batch; pass --resume to continue it, or "
+                     "choose another output folder");
   }
   BatchOptions resolved = options;
   resolved.out_dir = out_dir;
@@ -158,8 +167,9 @@ BatchOutcome RunBatch(const BatchOptions& options, Progress* progress) {
   fs::remove(outcome.results_dir / kBatchDoneFileName, ec);
   RemoveStrayTempFiles(outcome.results_dir);
   WritePlan(outcome.results_dir, plan);
-  Attempt attempt = StartAttempt(out_dir, options.shard,
-                                 options.label.empty() ? AttemptLabelFromEnvironment() : options.label, jobs);
+  Attempt attempt =
+      StartAttempt(out_dir, options.shard,
+                   options.label.empty() ? AttemptLabelFromEnvironment() : options.label, jobs);
   spdlog::info("batch{}: {} scan(s) planned, {} finished before, {} to run with {} worker(s)",
                options.shard.whole() ? "" : " shard " + options.shard.ToString(), plan.scans.size(),
                outcome.skipped, todo.size(), jobs);
@@ -168,7 +178,10 @@ BatchOutcome RunBatch(const BatchOptions& options, Progress* progress) {
   // parallel stages inside a scan do not oversubscribe the machine.
   const int threads = jobs > 1 ? std::max(1, AvailableCpus() / jobs) : 0;
   WorkerSettings worker{options.worker.empty() ? SelfExecutable() : fs::absolute(options.worker),
-                        options.design, options.units, options.timeout_s, options.memory_mb,
+                        options.design,
+                        options.units,
+                        options.timeout_s,
+                        options.memory_mb,
                         threads};
   std::vector<WorkerJob> work;
   std::map<std::string, const ScanEntry*> by_id;
@@ -176,8 +189,8 @@ BatchOutcome RunBatch(const BatchOptions& options, Progress* progress) {
     const fs::path folder = out_dir / entry.id;
     by_id[entry.id] = &entry;
     work.push_back({entry.id,
-                    {worker.executable, WorkerArguments(worker, entry, folder), folder / kWorkerLogName,
-                     options.memory_mb},
+                    {worker.executable, WorkerArguments(worker, entry, folder),
+                     folder / kWorkerLogName, options.memory_mb},
                     [folder] {
                       std::error_code e;
                       fs::remove_all(folder, e);
@@ -187,37 +200,48 @@ BatchOutcome RunBatch(const BatchOptions& options, Progress* progress) {
   const bool tty = ::isatty(STDERR_FILENO) == 1;
   ProgressBegin(progress, "scans", static_cast<std::int64_t>(work.size()));
   int ok = 0, failed = 0;
-  const PoolOutcome pool = RunWorkerPool(
-      {jobs, options.timeout_s}, work, [&](const WorkerResult& r) {
+  const PoolOutcome pool =
+      RunWorkerPool({jobs, options.timeout_s}, work, [&](const WorkerResult& r) {
         const ScanEntry& entry = *by_id.at(r.id);
         const DoneRecord record = RecordWorkerEnd(worker, entry, out_dir / entry.id, r);
         ++outcome.ran;
         (record.status == "ok" ? ok : failed) += 1;
         if (record.status != "ok") {
           if (tty) std::fputs("\r\033[K", stderr);
-          spdlog::warn("{} failed ({}): {}", entry.id, record.failure->kind, record.failure->message);
+          spdlog::warn("{} failed ({}): {}", entry.id, record.failure->kind,
+                       record.failure->message);
         } else if (!tty) {
           spdlog::info("[{}/{}] {} ok ({:.1f} s)", outcome.ran, work.size(), entry.id, r.wall_s);
         }
         ProgressUpdate(progress, outcome.ran);
-        UpdateAttempt(&attempt, {{"ran", outcome.ran}, {"ok", ok}, {"failed", failed},
-                                 {"skipped", outcome.skipped},
-                                 {"wall_s", std::chrono::duration<double>(
-                                                std::chrono::steady_clock::now() - started).count()}});
+        UpdateAttempt(
+            &attempt,
+            {{"ran", outcome.ran},
+             {"ok", ok},
+             {"failed", failed},
+             {"skipped", outcome.skipped},
+             {"wall_s",
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()}});
       });
   ProgressEnd(progress);
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  json fields = {{"planned", plan.scans.size()}, {"skipped", outcome.skipped}, {"ran", outcome.ran},
-                 {"ok", ok}, {"failed", failed}, {"wall_s", wall_s}};
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  json fields = {{"planned", plan.scans.size()},
+                 {"skipped", outcome.skipped},
+                 {"ran", outcome.ran},
+                 {"ok", ok},
+                 {"failed", failed},
+                 {"wall_s", wall_s}};
   if (pool.interrupted) {
     outcome.interrupted = true;
     outcome.signal = pool.signal;
     fields["status"] = "interrupted";
     fields["exit_code"] = outcome.ExitCode();
     FinishAttempt(&attempt, fields);
-    spdlog::warn("interrupted by {}: {} running worker(s) killed; their folders have no done.json "
-                 "and will be redone by --resume; no summary written",
-                 DescribeSignal(pool.signal), pool.killed_running);
+    spdlog::warn(
+        "interrupted by {}: {} running worker(s) killed; their folders have no done.json "
+        "and will be redone by --resume; no summary written",
+        DescribeSignal(pool.signal), pool.killed_running);
     return outcome;
   }
   std::vector<ScanOutcome> outcomes = CollectOutcomes(plan.scans, out_dir, /*verify_hashes=*/true);
@@ -225,9 +249,12 @@ BatchOutcome RunBatch(const BatchOptions& options, Progress* progress) {
   fields["status"] = "finished";
   fields["exit_code"] = outcome.ExitCode();
   FinishAttempt(&attempt, fields);
-  BatchResultsInput results{"bespoke batch of " + options.input.string() +
-                                (options.shard.whole() ? "" : " (shard " + options.shard.ToString() + ")"),
-                            std::move(outcomes), {}, SettingsJson(options, jobs)};
+  BatchResultsInput results{
+      "bespoke batch of " + options.input.string() +
+          (options.shard.whole() ? "" : " (shard " + options.shard.ToString() + ")"),
+      std::move(outcomes),
+      {},
+      SettingsJson(options, jobs)};
   for (json& a : ReadAttempts(out_dir)) {  // only this shard's (or whole run's) attempts
     if (a.value("shard", "") == options.shard.ToString()) results.attempts.push_back(std::move(a));
   }

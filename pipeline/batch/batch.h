@@ -52,9 +52,9 @@ struct BatchOptions {
 };
 
 struct BatchOutcome {
-  BatchCounts counts;       // over the whole plan (when not interrupted)
-  int skipped = 0;          // finished before (resume)
-  int ran = 0;              // scans run by this invocation
+  BatchCounts counts;  // over the whole plan (when not interrupted)
+  int skipped = 0;     // finished before (resume)
+  int ran = 0;         // scans run by this invocation
   bool interrupted = false;
   int signal = 0;
   std::filesystem::path results_dir;

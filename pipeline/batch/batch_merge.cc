@@ -74,17 +74,19 @@ MergeOutcome MergeBatches(const MergeOptions& options) {
   std::set<std::string> ids;
   for (const auto& [index, p] : by_index) {
     for (const ScanEntry& e : p->plan.scans) {
-      if (!ids.insert(e.id).second) throw InputError(p->file, "scan id '" + e.id + "' is in two shards");
+      if (!ids.insert(e.id).second)
+        throw InputError(p->file, "scan id '" + e.id + "' is in two shards");
     }
-    std::vector<ScanOutcome> part = CollectOutcomes(p->plan.scans, p->out_dir, /*verify_hashes=*/true);
+    std::vector<ScanOutcome> part =
+        CollectOutcomes(p->plan.scans, p->out_dir, /*verify_hashes=*/true);
     std::move(part.begin(), part.end(), std::back_inserter(outcomes));
   }
   std::sort(outcomes.begin(), outcomes.end(),
             [](const ScanOutcome& a, const ScanOutcome& b) { return a.entry.id < b.entry.id; });
 
   BatchResultsInput input;
-  input.title = "bespoke batch of " + *inputs.begin() + " (merged from " + std::to_string(plans.size()) +
-                " of " + std::to_string(count) + " shard(s))";
+  input.title = "bespoke batch of " + *inputs.begin() + " (merged from " +
+                std::to_string(plans.size()) + " of " + std::to_string(count) + " shard(s))";
   input.outcomes = std::move(outcomes);
   std::set<fs::path> dirs;
   for (const FoundPlan& p : plans) dirs.insert(p.out_dir);

@@ -30,8 +30,8 @@ struct MergeOptions {
 
 struct MergeOutcome {
   BatchCounts counts;
-  int shards = 0;           // plans merged
-  int missing_shards = 0;   // with allow_incomplete
+  int shards = 0;          // plans merged
+  int missing_shards = 0;  // with allow_incomplete
   std::filesystem::path results_dir;
   // As `bespoke batch`: 0 all ok, 1 only bad-input failures, 2 otherwise
   // (including missing shards).

@@ -22,14 +22,19 @@ fs::path ResultsDir(const fs::path& out_dir, const Shard& shard) {
 void WritePlan(const fs::path& results_dir, const Plan& plan) {
   json scans = json::array();
   for (const ScanEntry& s : plan.scans) {
-    scans.push_back({{"id", s.id}, {"path", s.path.string()}, {"design", s.design},
-                     {"units", s.units}, {"landmarks", s.landmarks.string()}});
+    scans.push_back({{"id", s.id},
+                     {"path", s.path.string()},
+                     {"design", s.design},
+                     {"units", s.units},
+                     {"landmarks", s.landmarks.string()}});
   }
   CreateDirectories(results_dir);
-  WriteJsonFile(results_dir / kPlanFileName,
-                {{"format", "bespoke-batch-plan"}, {"version", 1},
-                 {"shard", plan.shard.ToString()}, {"input", plan.input},
-                 {"total_scans", plan.total_scans}, {"scans", scans}});
+  WriteJsonFile(results_dir / kPlanFileName, {{"format", "bespoke-batch-plan"},
+                                              {"version", 1},
+                                              {"shard", plan.shard.ToString()},
+                                              {"input", plan.input},
+                                              {"total_scans", plan.total_scans},
+                                              {"scans", scans}});
 }
 
 Plan ReadPlan(const fs::path& file) {
@@ -42,8 +47,7 @@ Plan ReadPlan(const fs::path& file) {
     plan.total_scans = j.value("total_scans", 0);
     for (const json& s : j.at("scans")) {
       plan.scans.push_back({s.at("id").get<std::string>(), s.at("path").get<std::string>(),
-                            s.value("design", ""), s.value("units", ""),
-                            s.value("landmarks", "")});
+                            s.value("design", ""), s.value("units", ""), s.value("landmarks", "")});
     }
     return plan;
   } catch (const json::exception& e) {
@@ -59,7 +63,8 @@ std::vector<FoundPlan> FindPlans(const fs::path& out_dir) {
   }
   std::vector<fs::path> shard_dirs;
   if (fs::is_directory(out_dir / "shards", ec)) {
-    for (const auto& e : fs::directory_iterator(out_dir / "shards", ec)) shard_dirs.push_back(e.path());
+    for (const auto& e : fs::directory_iterator(out_dir / "shards", ec))
+      shard_dirs.push_back(e.path());
   }
   std::sort(shard_dirs.begin(), shard_dirs.end());
   for (const fs::path& d : shard_dirs) {
@@ -82,11 +87,13 @@ std::string AttemptLabelFromEnvironment() {
     label = "slurm job " + env("SLURM_JOB_ID");
   }
   if (!env("SLURM_RESTART_COUNT").empty()) label += " requeue " + env("SLURM_RESTART_COUNT");
-  if (!env("BESPOKE_TRY").empty()) label += (label.empty() ? "" : " ") + std::string("try ") + env("BESPOKE_TRY");
+  if (!env("BESPOKE_TRY").empty())
+    label += (label.empty() ? "" : " ") + std::string("try ") + env("BESPOKE_TRY");
   return label;
 }
 
-Attempt StartAttempt(const fs::path& out_dir, const Shard& shard, const std::string& label, int jobs) {
+Attempt StartAttempt(const fs::path& out_dir, const Shard& shard, const std::string& label,
+                     int jobs) {
   char host[256] = {0};
   ::gethostname(host, sizeof host - 1);
   const std::string started = UtcNow();
@@ -97,8 +104,13 @@ Attempt StartAttempt(const fs::path& out_dir, const Shard& shard, const std::str
   Attempt a;
   a.file = dir / ((shard.whole() ? std::string("whole") : shard.DirName()) + "-" + stamp + "-" +
                   host + "-" + std::to_string(::getpid()) + ".json");
-  a.record = {{"format", "bespoke-batch-attempt"}, {"shard", shard.ToString()}, {"label", label},
-              {"host", host}, {"pid", ::getpid()}, {"jobs", jobs}, {"started_utc", started},
+  a.record = {{"format", "bespoke-batch-attempt"},
+              {"shard", shard.ToString()},
+              {"label", label},
+              {"host", host},
+              {"pid", ::getpid()},
+              {"jobs", jobs},
+              {"started_utc", started},
               {"status", "running"}};
   WriteJsonFile(a.file, a.record);
   return a;

@@ -29,9 +29,9 @@ std::filesystem::path ResultsDir(const std::filesystem::path& out_dir, const Sha
 
 struct Plan {
   Shard shard;
-  std::string input;              // the batch's INPUT_DIR or manifest
-  std::vector<ScanEntry> scans;   // this shard's scans, sorted by id
-  int total_scans = 0;            // scans in the whole (unsharded) list
+  std::string input;             // the batch's INPUT_DIR or manifest
+  std::vector<ScanEntry> scans;  // this shard's scans, sorted by id
+  int total_scans = 0;           // scans in the whole (unsharded) list
 };
 
 void WritePlan(const std::filesystem::path& results_dir, const Plan& plan);
@@ -53,8 +53,8 @@ std::vector<FoundPlan> FindPlans(const std::filesystem::path& out_dir);
 struct Attempt {
   std::filesystem::path file;
   double last_write_s = 0;  // steady-clock seconds of the last write
-  nlohmann::json record;  // shard, label, host, pid, started_utc, finished_utc,
-                          // status, exit_code, planned, skipped, ran, ok, failed, wall_s, jobs
+  nlohmann::json record;    // shard, label, host, pid, started_utc, finished_utc,
+                            // status, exit_code, planned, skipped, ran, ok, failed, wall_s, jobs
 };
 Attempt StartAttempt(const std::filesystem::path& out_dir, const Shard& shard,
                      const std::string& label, int jobs);

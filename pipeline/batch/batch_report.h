@@ -23,9 +23,9 @@
 namespace bespoke {
 
 struct BatchResultsInput {
-  std::string title;                    // e.g. "batch of /data/scans"
-  std::vector<ScanOutcome> outcomes;    // sorted by id
-  std::vector<nlohmann::json> attempts; // ReadAttempts() of every output folder
+  std::string title;                                   // e.g. "batch of /data/scans"
+  std::vector<ScanOutcome> outcomes;                   // sorted by id
+  std::vector<nlohmann::json> attempts;                // ReadAttempts() of every output folder
   nlohmann::json settings = nlohmann::json::object();  // shown in the report and batch.json
 };
 

@@ -54,8 +54,8 @@ std::string ScanOutcome::failure_message() const {
   return record->failure ? record->failure->message : "";
 }
 
-std::vector<ScanOutcome> CollectOutcomes(const std::vector<ScanEntry>& plan, const fs::path& out_dir,
-                                         bool verify_hashes) {
+std::vector<ScanOutcome> CollectOutcomes(const std::vector<ScanEntry>& plan,
+                                         const fs::path& out_dir, bool verify_hashes) {
   std::vector<ScanOutcome> outcomes;
   for (const ScanEntry& entry : plan) {
     ScanOutcome o{entry, out_dir / entry.id, std::nullopt, "", json()};
@@ -133,7 +133,7 @@ std::string TimingsCsv(const std::vector<ScanOutcome>& outcomes) {
       if (!name.empty() && seen.insert(name).second) steps.push_back(name);
     }
   }
-  std::vector<std::string> header = {"scan_id", "status", "time_s", "worker_wall_s",
+  std::vector<std::string> header = {"scan_id", "status",   "time_s",    "worker_wall_s",
                                      "user_s",  "system_s", "max_rss_mb"};
   for (const std::string& s : steps) header.push_back(s + "_s");
   std::string csv = Row(header);
@@ -148,9 +148,11 @@ std::string TimingsCsv(const std::vector<ScanOutcome>& outcomes) {
       continue;
     }
     const json& w = o.record->worker;
-    std::vector<std::string> cells = {o.entry.id, o.record->status,
+    std::vector<std::string> cells = {o.entry.id,
+                                      o.record->status,
                                       fmt::format("{:.3f}", o.record->time_s),
-                                      number(w, "wall_s", "{:.3f}"), number(w, "user_s", "{:.3f}"),
+                                      number(w, "wall_s", "{:.3f}"),
+                                      number(w, "user_s", "{:.3f}"),
                                       number(w, "system_s", "{:.3f}"),
                                       number(w, "max_rss_mb", "{:.1f}")};
     for (const std::string& step : steps) {

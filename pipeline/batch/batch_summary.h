@@ -32,10 +32,10 @@ inline constexpr const char* kMeasurementsFileName = "measurements.json";
 // One planned scan and what its folder holds.
 struct ScanOutcome {
   ScanEntry entry;
-  std::filesystem::path folder;       // the scan's output folder
-  std::optional<DoneRecord> record;   // nullopt: not processed (no valid done.json)
-  std::string problem;                // why record is nullopt
-  nlohmann::json measurements;        // measurements.json of an ok scan, else null
+  std::filesystem::path folder;      // the scan's output folder
+  std::optional<DoneRecord> record;  // nullopt: not processed (no valid done.json)
+  std::string problem;               // why record is nullopt
+  nlohmann::json measurements;       // measurements.json of an ok scan, else null
 
   bool ok() const { return record && record->status == "ok"; }
   // "" when ok; the failure kind, or "not_processed".
@@ -45,8 +45,7 @@ struct ScanOutcome {
 
 // Reads every scan's folder (`out_dir`/<id>) for the `plan` (sorted by id).
 std::vector<ScanOutcome> CollectOutcomes(const std::vector<ScanEntry>& plan,
-                                         const std::filesystem::path& out_dir,
-                                         bool verify_hashes);
+                                         const std::filesystem::path& out_dir, bool verify_hashes);
 
 std::string SummaryCsv(const std::vector<ScanOutcome>& outcomes);
 std::string FailuresCsv(const std::vector<ScanOutcome>& outcomes);

@@ -1,11 +1,7 @@
 #include "pipeline/batch/done_record.h"
 
-#include <CGAL/version.h>
 #include <openssl/evp.h>
-#include <opencv2/core/version.hpp>
-#include <pcl/pcl_config.h>
 
-#include <Eigen/Core>
 #include <array>
 #include <cerrno>
 #include <cstring>
@@ -13,12 +9,9 @@
 #include <fstream>
 #include <memory>
 
+#include "scanners/core/build_info.h"
 #include "scanners/core/errors.h"
 #include "scanners/core/json_io.h"
-
-#ifndef BESPOKE_VERSION
-#define BESPOKE_VERSION "unknown"
-#endif
 
 namespace bespoke {
 namespace fs = std::filesystem;
@@ -34,7 +27,8 @@ std::string FileSha256(const fs::path& file) {
   std::array<char, 1 << 16> buffer;
   while (in) {
     in.read(buffer.data(), buffer.size());
-    if (in.gcount() > 0) EVP_DigestUpdate(ctx.get(), buffer.data(), static_cast<size_t>(in.gcount()));
+    if (in.gcount() > 0)
+      EVP_DigestUpdate(ctx.get(), buffer.data(), static_cast<size_t>(in.gcount()));
   }
   if (in.bad()) throw InputError(file, "read error while hashing");
   unsigned char digest[EVP_MAX_MD_SIZE];
@@ -67,23 +61,32 @@ std::string UtcNow() {
 }
 
 json BuildVersions() {
-  return {{"bespoke", BESPOKE_VERSION},
-          {"pcl", PCL_VERSION_PRETTY},
-          {"cgal", CGAL_VERSION_STR},
-          {"opencv", CV_VERSION},
-          {"eigen", std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) +
-                        "." + std::to_string(EIGEN_MINOR_VERSION)}};
+  const BuildInfo& info = GetBuildInfo();
+  json versions = {{"bespoke", info.version}};
+  for (const auto& [name, version] : info.libraries) versions[name] = version;
+  return versions;
 }
 
 json DoneRecord::ToJson() const {
-  json j = {{"format", "bespoke-scan-done"}, {"version", 1},       {"status", status},
-            {"scan_id", scan_id},            {"input", input},     {"input_size_bytes", input_size_bytes},
-            {"input_sha256", input_sha256},  {"results", results}, {"steps", steps},
-            {"time_s", time_s},              {"versions", versions}, {"settings", settings},
-            {"finished_utc", finished_utc}, {"worker", worker}};
+  json j = {{"format", "bespoke-scan-done"},
+            {"version", 1},
+            {"status", status},
+            {"scan_id", scan_id},
+            {"input", input},
+            {"input_size_bytes", input_size_bytes},
+            {"input_sha256", input_sha256},
+            {"results", results},
+            {"steps", steps},
+            {"time_s", time_s},
+            {"versions", versions},
+            {"settings", settings},
+            {"finished_utc", finished_utc},
+            {"worker", worker}};
   if (failure) {
-    j["failure"] = {{"kind", failure->kind},         {"message", failure->message},
-                    {"exit_code", failure->exit_code}, {"signal", failure->signal},
+    j["failure"] = {{"kind", failure->kind},
+                    {"message", failure->message},
+                    {"exit_code", failure->exit_code},
+                    {"signal", failure->signal},
                     {"log_tail", failure->log_tail}};
   }
   json outs = json::array();
@@ -101,7 +104,8 @@ DoneRecord DoneRecord::FromJson(const json& j, const std::string& what) {
     }
     DoneRecord r;
     r.status = j.at("status").get<std::string>();
-    if (r.status != "ok" && r.status != "failed") throw InputError(what + ": unknown status " + r.status);
+    if (r.status != "ok" && r.status != "failed")
+      throw InputError(what + ": unknown status " + r.status);
     r.scan_id = j.at("scan_id").get<std::string>();
     r.input = j.at("input").get<std::string>();
     r.input_size_bytes = j.value("input_size_bytes", std::int64_t{-1});
@@ -115,8 +119,9 @@ DoneRecord DoneRecord::FromJson(const json& j, const std::string& what) {
     r.worker = j.value("worker", json::object());
     if (j.contains("failure")) {
       const json& f = j.at("failure");
-      r.failure = ScanFailure{f.at("kind").get<std::string>(), f.at("message").get<std::string>(),
-                              f.value("exit_code", -1), f.value("signal", 0), f.value("log_tail", "")};
+      r.failure =
+          ScanFailure{f.at("kind").get<std::string>(), f.at("message").get<std::string>(),
+                      f.value("exit_code", -1), f.value("signal", 0), f.value("log_tail", "")};
     }
     if (r.status == "failed" && !r.failure) throw InputError(what + ": failed without a reason");
     for (const json& o : j.at("outputs")) {

@@ -32,11 +32,11 @@ inline constexpr const char* kDoneFileName = "done.json";
 // Why a scan failed. The kind decides the batch's exit code (input_error -> 1,
 // anything else -> 2) and is a column of failures.csv.
 struct ScanFailure {
-  std::string kind;     // input_error | internal_error | out_of_memory | timeout | crash | not_started
-  std::string message;  // one line a user can act on; deterministic (no pids, no times)
-  int exit_code = -1;   // the worker's exit code, -1 when it was killed by a signal
-  int signal = 0;       // the signal that ended the worker, 0 when it exited
-  std::string log_tail; // the last lines of the worker's log
+  std::string kind;  // input_error | internal_error | out_of_memory | timeout | crash | not_started
+  std::string message;   // one line a user can act on; deterministic (no pids, no times)
+  int exit_code = -1;    // the worker's exit code, -1 when it was killed by a signal
+  int signal = 0;        // the signal that ended the worker, 0 when it exited
+  std::string log_tail;  // the last lines of the worker's log
 };
 
 struct OutputFile {
@@ -49,12 +49,12 @@ struct DoneRecord {
   std::string status;  // "ok" or "failed"
   std::string scan_id;
   std::string input;
-  std::int64_t input_size_bytes = -1;  // -1 when the input is not a regular file
-  std::string input_sha256;            // "" when not a regular file
+  std::int64_t input_size_bytes = -1;                 // -1 when the input is not a regular file
+  std::string input_sha256;                           // "" when not a regular file
   nlohmann::json results = nlohmann::json::object();  // flat name -> number/string
   std::optional<ScanFailure> failure;
-  nlohmann::json steps = nlohmann::json::array();     // [{"name", "time_s", ...}]
-  double time_s = 0;                                  // wall time of the job
+  nlohmann::json steps = nlohmann::json::array();  // [{"name", "time_s", ...}]
+  double time_s = 0;                               // wall time of the job
   nlohmann::json versions = nlohmann::json::object();
   nlohmann::json settings = nlohmann::json::object();
   std::vector<OutputFile> outputs;
@@ -81,8 +81,7 @@ void WriteDoneRecord(const std::filesystem::path& dir, DoneRecord record);
 // listed output exists with its recorded size (and SHA-256 when
 // `verify_hashes`). nullopt when absent or invalid; `problem` (if given) then
 // says why ("missing", "measurements.json: size 10, recorded 2048", ...).
-std::optional<DoneRecord> ReadValidDoneRecord(const std::filesystem::path& dir,
-                                              bool verify_hashes,
+std::optional<DoneRecord> ReadValidDoneRecord(const std::filesystem::path& dir, bool verify_hashes,
                                               std::string* problem = nullptr);
 
 // "2024-05-01T12:00:00Z" for now.

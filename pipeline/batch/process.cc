@@ -35,11 +35,15 @@ namespace {
   struct sigaction dfl {};
   dfl.sa_handler = SIG_DFL;
   for (int s : {SIGPIPE, SIGINT, SIGTERM, SIGHUP, SIGCHLD}) ::sigaction(s, &dfl, nullptr);
-  struct rlimit no_core {0, 0};
+  struct rlimit no_core {
+    0, 0
+  };
   ::setrlimit(RLIMIT_CORE, &no_core);
   if (memory_limit_mb > 0) {
     const rlim_t bytes = static_cast<rlim_t>(memory_limit_mb) * 1024 * 1024;
-    struct rlimit as {bytes, bytes};
+    struct rlimit as {
+      bytes, bytes
+    };
     ::setrlimit(RLIMIT_AS, &as);
   }
   ::dup2(null_fd, STDIN_FILENO);
@@ -94,7 +98,8 @@ pid_t SpawnWorker(const SpawnOptions& options) {
   for (const std::string& a : options.argv) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   const std::string executable = options.executable.string();
-  const int log_fd = ::open(options.log_file.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  const int log_fd =
+      ::open(options.log_file.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (log_fd < 0) {
     throw InternalError("cannot open worker log " + options.log_file.string() + ": " +
                         std::strerror(errno));
@@ -107,7 +112,8 @@ pid_t SpawnWorker(const SpawnOptions& options) {
   const int fork_errno = errno;
   ::close(log_fd);
   if (null_fd >= 0) ::close(null_fd);
-  if (pid < 0) throw InternalError(std::string("cannot fork a worker: ") + std::strerror(fork_errno));
+  if (pid < 0)
+    throw InternalError(std::string("cannot fork a worker: ") + std::strerror(fork_errno));
   ::setpgid(pid, pid);  // also from the parent: no race with SignalWorker
   return pid;
 }
@@ -131,7 +137,8 @@ WorkerExit ReapWorker(pid_t pid) {
   do {
     r = ::wait4(pid, &status, 0, &usage);
   } while (r < 0 && errno == EINTR);
-  if (r < 0) throw InternalError("waiting for worker " + std::to_string(pid) + ": " + std::strerror(errno));
+  if (r < 0)
+    throw InternalError("waiting for worker " + std::to_string(pid) + ": " + std::strerror(errno));
   return FromStatus(status, usage);
 }
 

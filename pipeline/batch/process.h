@@ -32,10 +32,10 @@
 namespace bespoke {
 
 struct SpawnOptions {
-  std::filesystem::path executable;   // program to exec (absolute path)
-  std::vector<std::string> argv;      // argv[0] first
-  std::filesystem::path log_file;     // stdout + stderr (appended; created if needed)
-  std::int64_t memory_limit_mb = 0;   // RLIMIT_AS in MB; 0 = unlimited (default)
+  std::filesystem::path executable;  // program to exec (absolute path)
+  std::vector<std::string> argv;     // argv[0] first
+  std::filesystem::path log_file;    // stdout + stderr (appended; created if needed)
+  std::int64_t memory_limit_mb = 0;  // RLIMIT_AS in MB; 0 = unlimited (default)
 };
 
 // Starts the process; returns its pid (also its process group id). Throws
@@ -44,12 +44,12 @@ struct SpawnOptions {
 pid_t SpawnWorker(const SpawnOptions& options);
 
 struct WorkerExit {
-  bool signaled = false;    // ended by a signal
-  int exit_code = -1;       // when !signaled
-  int signal = 0;           // when signaled
-  double user_s = 0;        // CPU time in user mode
-  double system_s = 0;      // CPU time in the kernel
-  double max_rss_mb = 0;    // peak resident memory
+  bool signaled = false;  // ended by a signal
+  int exit_code = -1;     // when !signaled
+  int signal = 0;         // when signaled
+  double user_s = 0;      // CPU time in user mode
+  double system_s = 0;    // CPU time in the kernel
+  double max_rss_mb = 0;  // peak resident memory
 };
 
 // Non-blocking wait for `pid` (wait4 with WNOHANG); nullopt while it runs.

@@ -26,8 +26,8 @@ void DescribeInput(const fs::path& scan, DoneRecord* record) {
   std::error_code ec;
   const fs::file_status link = fs::symlink_status(scan, ec);
   if (fs::is_symlink(link) && !fs::exists(scan, ec)) {
-    throw InputError(scan, "is a dangling symbolic link (to '" + fs::read_symlink(scan, ec).string() +
-                               "'), not a scan file");
+    throw InputError(scan, "is a dangling symbolic link (to '" +
+                               fs::read_symlink(scan, ec).string() + "'), not a scan file");
   }
   if (!fs::is_regular_file(scan, ec)) return;  // the reader names what it is
   record->input_size_bytes = static_cast<std::int64_t>(fs::file_size(scan, ec));
@@ -87,8 +87,11 @@ void ScanJobOptions::Check() const {
 }
 
 json ScanJobOptions::ToJson() const {
-  return {{"scan_id", scan_id}, {"units", units}, {"design", design},
-          {"landmarks", landmarks.string()}, {"write_cleaned_cloud", write_cleaned_cloud},
+  return {{"scan_id", scan_id},
+          {"units", units},
+          {"design", design},
+          {"landmarks", landmarks.string()},
+          {"write_cleaned_cloud", write_cleaned_cloud},
           {"threads", threads}};
 }
 

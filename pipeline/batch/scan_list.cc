@@ -75,7 +75,8 @@ std::vector<ScanEntry> DiscoverScans(const DiscoverOptions& options, const fs::p
   auto base_id = [](const fs::path& rel, bool with_extension) {
     std::string stem = (rel.parent_path() / rel.stem()).generic_string();
     std::string id;
-    for (size_t i = 0; i < stem.size(); ++i) id += stem[i] == '/' ? std::string("__") : std::string(1, stem[i]);
+    for (size_t i = 0; i < stem.size(); ++i)
+      id += stem[i] == '/' ? std::string("__") : std::string(1, stem[i]);
     if (with_extension) id += "_" + Lower(rel.extension().string().substr(1));
     return SanitizeId(id);
   };
@@ -175,7 +176,8 @@ std::vector<ScanEntry> ReadManifest(const fs::path& manifest) {
     }
     scans.push_back(std::move(entry));
   }
-  if (!record.empty()) throw InputError(manifest, "line " + std::to_string(record_line) + ": unterminated quote");
+  if (!record.empty())
+    throw InputError(manifest, "line " + std::to_string(record_line) + ": unterminated quote");
   if (column.empty()) throw InputError(manifest, "empty manifest (no header line)");
   std::sort(scans.begin(), scans.end(),
             [](const ScanEntry& a, const ScanEntry& b) { return a.id < b.id; });
@@ -189,9 +191,7 @@ std::vector<ScanEntry> ListScans(const DiscoverOptions& options, const fs::path&
   return ReadManifest(input);
 }
 
-std::string Shard::ToString() const {
-  return std::to_string(index) + "/" + std::to_string(count);
-}
+std::string Shard::ToString() const { return std::to_string(index) + "/" + std::to_string(count); }
 
 std::string Shard::DirName() const {
   return "shard-" + std::to_string(index) + "-of-" + std::to_string(count);

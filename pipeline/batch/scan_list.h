@@ -31,11 +31,11 @@
 namespace bespoke {
 
 struct ScanEntry {
-  std::string id;                    // folder name of the scan's outputs
-  std::filesystem::path path;        // absolute, lexically normal
-  std::string design;                // "" = the batch's --design
-  std::string units;                 // "" = the batch's --units (or guessed)
-  std::filesystem::path landmarks;   // "" = none; a landmark override JSON
+  std::string id;                   // folder name of the scan's outputs
+  std::filesystem::path path;       // absolute, lexically normal
+  std::string design;               // "" = the batch's --design
+  std::string units;                // "" = the batch's --units (or guessed)
+  std::filesystem::path landmarks;  // "" = none; a landmark override JSON
 };
 
 struct DiscoverOptions {
@@ -65,8 +65,8 @@ struct Shard {
   int index = 1;
   int count = 1;
   bool whole() const { return count == 1; }
-  std::string ToString() const;   // "2/4"
-  std::string DirName() const;    // "shard-2-of-4"
+  std::string ToString() const;  // "2/4"
+  std::string DirName() const;   // "shard-2-of-4"
 };
 
 // Parses "I/N" with 1 <= I <= N <= 100000; InputError otherwise.
@@ -75,8 +75,7 @@ Shard ParseShard(const std::string& text);
 // The scans of `shard`: positions p (0-based, in the id-sorted list) with
 // p % count == index - 1. Round robin keeps shard sizes within one of each
 // other and does not depend on anything but the sorted list.
-std::vector<ScanEntry> SelectShard(const std::vector<ScanEntry>& sorted_scans,
-                                   const Shard& shard);
+std::vector<ScanEntry> SelectShard(const std::vector<ScanEntry>& sorted_scans, const Shard& shard);
 
 // Splits one CSV record (no trailing newline) into fields (RFC 4180 quotes).
 // Exposed for tests and the merge step.

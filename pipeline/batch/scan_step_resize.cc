@@ -23,13 +23,18 @@ void ResizeStep(JobState& s) {
   WritePatternJson(result.fitted, s.out_dir / "fitted.json");
   WritePatternSvg(SvgOptions(), result.fitted, s.out_dir / "fitted.svg");
   WritePatternDxf(DxfWriteOptions(), result.fitted, s.out_dir / "fitted.dxf");
-  const nlohmann::json settings = {{"design", design}, {"seed", options.seed}, {"population", options.population},
-                                   {"generations", options.generations}, {"tolerance_mm", options.tolerance_mm}};
+  const nlohmann::json settings = {{"design", design},
+                                   {"seed", options.seed},
+                                   {"population", options.population},
+                                   {"generations", options.generations},
+                                   {"tolerance_mm", options.tolerance_mm}};
   WriteJsonFile(s.out_dir / "resize_report.json", ResizeReportJson(base, body, result, settings));
-  for (const char* f : {"fitted.json", "fitted.svg", "fitted.dxf", "resize_report.json"}) s.AddOutput(f);
+  for (const char* f : {"fitted.json", "fitted.svg", "fitted.dxf", "resize_report.json"})
+    s.AddOutput(f);
   s.SetResult("fit_max_measurement_error_mm", result.objectives.max_measurement_mm);
   s.SetResult("fit_max_seam_mismatch_mm", result.objectives.max_seam_length_mm);
-  spdlog::info("resize: {} fitted, worst binding error {:.3f} mm", design, result.objectives.max_measurement_mm);
+  spdlog::info("resize: {} fitted, worst binding error {:.3f} mm", design,
+               result.objectives.max_measurement_mm);
 }
 
 }  // namespace bespoke

@@ -50,7 +50,8 @@ ScanFailure Classify(const WorkerSettings& settings, const WorkerResult& r,
   } else if (r.exit.signaled) {
     f.kind = "crash";
     f.message = "the worker crashed: " + DescribeSignal(r.exit.signal);
-    if (r.exit.signal == 9) f.message += " not sent by the batch (the kernel's out-of-memory killer?)";
+    if (r.exit.signal == 9)
+      f.message += " not sent by the batch (the kernel's out-of-memory killer?)";
     if (!message.empty()) f.message += "; last error: " + message;
   } else if (r.exit.exit_code == 1) {
     f.kind = "input_error";
@@ -77,9 +78,15 @@ ScanFailure Classify(const WorkerSettings& settings, const WorkerResult& r,
 
 std::vector<std::string> WorkerArguments(const WorkerSettings& settings, const ScanEntry& entry,
                                          const fs::path& folder) {
-  std::vector<std::string> argv = {settings.executable.string(), "run", entry.path.string(),
-                                   "-o", folder.string(), "--scan-id", entry.id};
-  if (settings.threads > 0) argv.insert(argv.end(), {"--threads", std::to_string(settings.threads)});
+  std::vector<std::string> argv = {settings.executable.string(),
+                                   "run",
+                                   entry.path.string(),
+                                   "-o",
+                                   folder.string(),
+                                   "--scan-id",
+                                   entry.id};
+  if (settings.threads > 0)
+    argv.insert(argv.end(), {"--threads", std::to_string(settings.threads)});
   const std::string design = entry.design.empty() ? settings.design : entry.design;
   const std::string units = entry.units.empty() ? settings.units : entry.units;
   if (!design.empty()) argv.insert(argv.end(), {"--design", design});
@@ -128,8 +135,8 @@ DoneRecord RecordWorkerEnd(const WorkerSettings& settings, const ScanEntry& entr
   record.status = "failed";
   record.scan_id = entry.id;
   record.input = entry.path.string();
-  record.failure = Classify(settings, result, worker_message, FileTail(folder / kWorkerLogName, 15),
-                            problem);
+  record.failure =
+      Classify(settings, result, worker_message, FileTail(folder / kWorkerLogName, 15), problem);
   record.worker = worker;
   record.finished_utc.clear();
   WriteDoneRecord(folder, record);

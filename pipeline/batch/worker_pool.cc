@@ -54,7 +54,9 @@ class SignalScope {
   }
   // Sleeps until a signal arrives or `seconds` pass.
   void Wait(double seconds) {
-    struct pollfd fd {pipe_[0], POLLIN, 0};
+    struct pollfd fd {
+      pipe_[0], POLLIN, 0
+    };
     ::poll(&fd, 1, static_cast<int>(seconds * 1000));
     char drain[64];
     while (::read(pipe_[0], drain, sizeof drain) > 0) {

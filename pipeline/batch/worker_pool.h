@@ -24,8 +24,8 @@
 namespace bespoke {
 
 struct WorkerJob {
-  std::string id;       // the scan id, passed back in WorkerResult
-  SpawnOptions spawn;   // what to run
+  std::string id;      // the scan id, passed back in WorkerResult
+  SpawnOptions spawn;  // what to run
   // Called right before the worker starts (prepare its folder); may throw.
   std::function<void()> prepare;
 };

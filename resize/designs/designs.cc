@@ -17,7 +17,8 @@ MeasurementSet BaseMeasurements(const std::string& design) {
             {"back_width", 390},   {"armhole_length", 460}, {"waist_to_hip", 200},
             {"arm_length", 640},   {"wrist_girth", 175}};
   if (design == "trousers") {
-    MeasurementSet m = {{"waist_girth", 840}, {"hip_girth", 1000}, {"inside_leg", 810}, {"waist_height", 1060}};
+    MeasurementSet m = {
+        {"waist_girth", 840}, {"hip_girth", 1000}, {"inside_leg", 810}, {"waist_height", 1060}};
     AddDerivedMeasurements(&m, "design trousers");  // body_rise
     return m;
   }

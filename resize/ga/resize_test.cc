@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include "eval/resize/evidence.h"
 #include "resize/designs/body_variants.h"
 #include "resize/designs/designs.h"
-#include "resize/ga/evidence.h"
 #include "resize/ga/grading.h"
 #include "resize/pattern/geometry.h"
 #include "scanners/core/errors.h"

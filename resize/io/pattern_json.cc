@@ -241,9 +241,10 @@ void ApplySidecar(const json& sidecar, const std::string& what, Pattern* pattern
     const int p = pattern->FindPiece(name);
     if (p < 0) {
       std::string known;
-      for (const Piece& piece : pattern->pieces) known += (known.empty() ? "'" : ", '") + piece.name + "'";
-      throw InputError(what + ": sidecar names unknown piece '" + name + "' (the pattern's pieces: " +
-                       known + ")");
+      for (const Piece& piece : pattern->pieces)
+        known += (known.empty() ? "'" : ", '") + piece.name + "'";
+      throw InputError(what + ": sidecar names unknown piece '" + name +
+                       "' (the pattern's pieces: " + known + ")");
     }
     ParsePieceExtras(pj, what + ": piece '" + name + "'", &pattern->pieces[p]);
   }

@@ -17,8 +17,8 @@ namespace {
 
 std::filesystem::path TempPathFor(const std::filesystem::path& target) {
   static std::atomic<unsigned> counter{0};
-  return target.parent_path() / (target.filename().string() + ".tmp-" +
-                                 std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  return target.parent_path() / (target.filename().string() + ".tmp-" + std::to_string(::getpid()) +
+                                 "-" + std::to_string(counter++));
 }
 
 void FsyncPath(const std::filesystem::path& path, int flags) {

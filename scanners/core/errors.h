@@ -1,7 +1,7 @@
 // Typed errors thrown by every Bespoke library.
 //
 // Library code never aborts and never calls exit(): it throws one of these.
-// Only `main` (pipeline/main.cc) turns them into process exit codes:
+// Only `main` (pipeline/cli/main.cc) turns them into process exit codes:
 //   InputError    -> exit 1  (the user's file, option or data is wrong)
 //   InternalError -> exit 2  (a bug or an unexpected failure inside Bespoke)
 // Any other std::exception reaching main is treated as an InternalError.
@@ -43,11 +43,11 @@ class InternalError : public Error {
 
 // Throws InternalError("<what> (<file>:<line>)") when `condition` is false.
 // For invariants of Bespoke's own code, not for checking user input.
-#define BESPOKE_CHECK(condition, what)                                        \
-  do {                                                                        \
-    if (!(condition))                                                         \
-      throw ::bespoke::InternalError(std::string(what) + " (" + __FILE__ +    \
-                                     ":" + std::to_string(__LINE__) + ")");   \
+#define BESPOKE_CHECK(condition, what)                                           \
+  do {                                                                           \
+    if (!(condition))                                                            \
+      throw ::bespoke::InternalError(std::string(what) + " (" + __FILE__ + ":" + \
+                                     std::to_string(__LINE__) + ")");            \
   } while (false)
 
 }  // namespace bespoke

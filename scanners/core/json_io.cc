@@ -12,8 +12,8 @@ namespace bespoke {
 nlohmann::json ReadJsonFile(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) {
-    throw InputError(file, std::filesystem::exists(file, ec) ? "is not a regular file"
-                                                             : "no such file");
+    throw InputError(file,
+                     std::filesystem::exists(file, ec) ? "is not a regular file" : "no such file");
   }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file, "cannot open for reading");

@@ -3,7 +3,7 @@
 // Library functions that can run for more than a second take a `Progress*`
 // (may be null: then nothing is reported). The CLI supplies one that draws a
 // bar with rate and ETA on a terminal and stays quiet (or logs plain lines)
-// in scripts; see pipeline/progress_bar.h. Tests pass nullptr.
+// in scripts; see pipeline/cli/progress_bar.h. Tests pass nullptr.
 #ifndef BESPOKE_SCANNERS_CORE_PROGRESS_H_
 #define BESPOKE_SCANNERS_CORE_PROGRESS_H_
 

@@ -17,8 +17,8 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <map>
-#include <vector>
 #include <string>
+#include <vector>
 
 namespace bespoke {
 

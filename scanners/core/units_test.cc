@@ -24,11 +24,11 @@ TEST(Units, ParsesNamesAndRejectsOthers) {
 }
 
 TEST(Units, GuessesFromABodysExtent) {
-  EXPECT_EQ(GuessLengthUnit(1.75), LengthUnit::kMetre);        // 1.75 m tall
-  EXPECT_EQ(GuessLengthUnit(17.5), LengthUnit::kDecimetre);    // MakeHuman
+  EXPECT_EQ(GuessLengthUnit(1.75), LengthUnit::kMetre);      // 1.75 m tall
+  EXPECT_EQ(GuessLengthUnit(17.5), LengthUnit::kDecimetre);  // MakeHuman
   EXPECT_EQ(GuessLengthUnit(175.0), LengthUnit::kCentimetre);
   EXPECT_EQ(GuessLengthUnit(1750.0), LengthUnit::kMillimetre);
-  EXPECT_EQ(GuessLengthUnit(2.4), LengthUnit::kMetre);         // arms raised
+  EXPECT_EQ(GuessLengthUnit(2.4), LengthUnit::kMetre);  // arms raised
   EXPECT_FALSE(GuessLengthUnit(0.0).has_value());
   EXPECT_FALSE(GuessLengthUnit(-3.0).has_value());
   EXPECT_FALSE(GuessLengthUnit(std::numeric_limits<double>::quiet_NaN()).has_value());

@@ -132,13 +132,17 @@ std::string Quote(std::string_view token) {
 int SizeOf(ScalarType type) {
   switch (type) {
     case ScalarType::kInt8:
-    case ScalarType::kUint8: return 1;
+    case ScalarType::kUint8:
+      return 1;
     case ScalarType::kInt16:
-    case ScalarType::kUint16: return 2;
+    case ScalarType::kUint16:
+      return 2;
     case ScalarType::kInt32:
     case ScalarType::kUint32:
-    case ScalarType::kFloat32: return 4;
-    case ScalarType::kFloat64: return 8;
+    case ScalarType::kFloat32:
+      return 4;
+    case ScalarType::kFloat64:
+      return 8;
   }
   return 1;
 }
@@ -197,27 +201,43 @@ void ConvertAll(const char* src, std::int64_t stride, bool big_endian, std::int6
 void ConvertColumn(const char* src, std::int64_t stride, ScalarType type, bool big_endian,
                    std::int64_t count, double* dst) {
   switch (type) {
-    case ScalarType::kInt8: return ConvertAll<std::int8_t>(src, stride, false, count, dst);
-    case ScalarType::kUint8: return ConvertAll<std::uint8_t>(src, stride, false, count, dst);
-    case ScalarType::kInt16: return ConvertAll<std::int16_t>(src, stride, big_endian, count, dst);
-    case ScalarType::kUint16: return ConvertAll<std::uint16_t>(src, stride, big_endian, count, dst);
-    case ScalarType::kInt32: return ConvertAll<std::int32_t>(src, stride, big_endian, count, dst);
-    case ScalarType::kUint32: return ConvertAll<std::uint32_t>(src, stride, big_endian, count, dst);
-    case ScalarType::kFloat32: return ConvertAll<float>(src, stride, big_endian, count, dst);
-    case ScalarType::kFloat64: return ConvertAll<double>(src, stride, big_endian, count, dst);
+    case ScalarType::kInt8:
+      return ConvertAll<std::int8_t>(src, stride, false, count, dst);
+    case ScalarType::kUint8:
+      return ConvertAll<std::uint8_t>(src, stride, false, count, dst);
+    case ScalarType::kInt16:
+      return ConvertAll<std::int16_t>(src, stride, big_endian, count, dst);
+    case ScalarType::kUint16:
+      return ConvertAll<std::uint16_t>(src, stride, big_endian, count, dst);
+    case ScalarType::kInt32:
+      return ConvertAll<std::int32_t>(src, stride, big_endian, count, dst);
+    case ScalarType::kUint32:
+      return ConvertAll<std::uint32_t>(src, stride, big_endian, count, dst);
+    case ScalarType::kFloat32:
+      return ConvertAll<float>(src, stride, big_endian, count, dst);
+    case ScalarType::kFloat64:
+      return ConvertAll<double>(src, stride, big_endian, count, dst);
   }
 }
 
 double LoadScalar(const char* p, ScalarType type, bool big_endian) {
   switch (type) {
-    case ScalarType::kInt8: return Load<std::int8_t>(p, false);
-    case ScalarType::kUint8: return Load<std::uint8_t>(p, false);
-    case ScalarType::kInt16: return Load<std::int16_t>(p, big_endian);
-    case ScalarType::kUint16: return Load<std::uint16_t>(p, big_endian);
-    case ScalarType::kInt32: return Load<std::int32_t>(p, big_endian);
-    case ScalarType::kUint32: return Load<std::uint32_t>(p, big_endian);
-    case ScalarType::kFloat32: return Load<float>(p, big_endian);
-    case ScalarType::kFloat64: return Load<double>(p, big_endian);
+    case ScalarType::kInt8:
+      return Load<std::int8_t>(p, false);
+    case ScalarType::kUint8:
+      return Load<std::uint8_t>(p, false);
+    case ScalarType::kInt16:
+      return Load<std::int16_t>(p, big_endian);
+    case ScalarType::kUint16:
+      return Load<std::uint16_t>(p, big_endian);
+    case ScalarType::kInt32:
+      return Load<std::int32_t>(p, big_endian);
+    case ScalarType::kUint32:
+      return Load<std::uint32_t>(p, big_endian);
+    case ScalarType::kFloat32:
+      return Load<float>(p, big_endian);
+    case ScalarType::kFloat64:
+      return Load<double>(p, big_endian);
   }
   return 0.0;
 }
@@ -233,14 +253,22 @@ std::uint32_t LoadUint32Le(const char* p) { return Load<std::uint32_t>(p, false)
 
 void AppendScalar(std::string* out, double value, ScalarType type, bool big_endian) {
   switch (type) {
-    case ScalarType::kInt8: return Store(out, Saturate<std::int8_t>(value), false);
-    case ScalarType::kUint8: return Store(out, Saturate<std::uint8_t>(value), false);
-    case ScalarType::kInt16: return Store(out, Saturate<std::int16_t>(value), big_endian);
-    case ScalarType::kUint16: return Store(out, Saturate<std::uint16_t>(value), big_endian);
-    case ScalarType::kInt32: return Store(out, Saturate<std::int32_t>(value), big_endian);
-    case ScalarType::kUint32: return Store(out, Saturate<std::uint32_t>(value), big_endian);
-    case ScalarType::kFloat32: return Store(out, SafeFloat(value), big_endian);
-    case ScalarType::kFloat64: return Store(out, value, big_endian);
+    case ScalarType::kInt8:
+      return Store(out, Saturate<std::int8_t>(value), false);
+    case ScalarType::kUint8:
+      return Store(out, Saturate<std::uint8_t>(value), false);
+    case ScalarType::kInt16:
+      return Store(out, Saturate<std::int16_t>(value), big_endian);
+    case ScalarType::kUint16:
+      return Store(out, Saturate<std::uint16_t>(value), big_endian);
+    case ScalarType::kInt32:
+      return Store(out, Saturate<std::int32_t>(value), big_endian);
+    case ScalarType::kUint32:
+      return Store(out, Saturate<std::uint32_t>(value), big_endian);
+    case ScalarType::kFloat32:
+      return Store(out, SafeFloat(value), big_endian);
+    case ScalarType::kFloat64:
+      return Store(out, value, big_endian);
   }
 }
 

@@ -8,8 +8,8 @@
 
 namespace bespoke::io {
 
-void CheckCount(const ReadOptions& options, const std::filesystem::path& file,
-                std::int64_t count, const std::string& what, const std::string& where) {
+void CheckCount(const ReadOptions& options, const std::filesystem::path& file, std::int64_t count,
+                const std::string& what, const std::string& where) {
   if (count < 0) {
     Fail(file, where + ": " + what + " is negative (" + std::to_string(count) + ")");
   }
@@ -19,8 +19,8 @@ void CheckCount(const ReadOptions& options, const std::filesystem::path& file,
   }
 }
 
-Eigen::MatrixX3i TrianglesToMatrix(const std::filesystem::path& file,
-                                   const std::vector<int>& flat, Eigen::Index num_vertices) {
+Eigen::MatrixX3i TrianglesToMatrix(const std::filesystem::path& file, const std::vector<int>& flat,
+                                   Eigen::Index num_vertices) {
   const auto n = static_cast<Eigen::Index>(flat.size() / 3);
   Eigen::MatrixX3i faces(n, 3);
   for (Eigen::Index f = 0; f < n; ++f) {

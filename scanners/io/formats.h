@@ -28,9 +28,9 @@
 namespace bespoke::io {
 
 struct RawScan {
-  PointCloud cloud;            // file units; may hold NaN/Inf points
-  Eigen::MatrixX3i faces;      // #T x 3 triangles, 0 x 3 for point formats
-  std::vector<int> face_group; // OBJ: group of each triangle
+  PointCloud cloud;             // file units; may hold NaN/Inf points
+  Eigen::MatrixX3i faces;       // #T x 3 triangles, 0 x 3 for point formats
+  std::vector<int> face_group;  // OBJ: group of each triangle
   std::vector<std::string> group_names;
   std::string encoding;               // "ascii", "binary_little_endian", ...
   std::vector<std::string> fields;    // per-point properties as named in the file
@@ -67,12 +67,12 @@ std::string WriteStl(const WriteOptions& options, const TriangleMesh& mesh);
 
 // Shared checks used by several readers.
 // Throws unless 0 <= count <= options.max_elements.
-void CheckCount(const ReadOptions& options, const std::filesystem::path& file,
-                std::int64_t count, const std::string& what, const std::string& where);
+void CheckCount(const ReadOptions& options, const std::filesystem::path& file, std::int64_t count,
+                const std::string& what, const std::string& where);
 // Builds the #T x 3 face matrix from a flat triangle list and checks every
 // index is in [0, num_vertices).
-Eigen::MatrixX3i TrianglesToMatrix(const std::filesystem::path& file,
-                                   const std::vector<int>& flat, Eigen::Index num_vertices);
+Eigen::MatrixX3i TrianglesToMatrix(const std::filesystem::path& file, const std::vector<int>& flat,
+                                   Eigen::Index num_vertices);
 // Hands out distinct names: `name` itself, else name_2, name_3, ... in
 // amortised constant time (files may repeat a column name 100,000s of times).
 class NameSet {

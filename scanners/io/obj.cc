@@ -25,8 +25,7 @@ bool IsKeyword(std::string_view token) {
 
 class ObjParser {
  public:
-  ObjParser(const ReadOptions& options, const std::filesystem::path& file,
-            std::string_view bytes)
+  ObjParser(const ReadOptions& options, const std::filesystem::path& file, std::string_view bytes)
       : options_(options), file_(file), lines_(StripBom(bytes)) {}
 
   RawScan Parse() {

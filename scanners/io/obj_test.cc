@@ -3,8 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "scanners/io/io_test_util.h"
 #include "scanners/io/scan_io.h"
+#include "tests/support/io_test_util.h"
 #include "tests/support/test_support.h"
 
 namespace bespoke {
@@ -89,7 +89,8 @@ TEST(ObjWrite, RoundTripIsExact) {
   const Mesh back = ReadMesh(FixtureOptions(), dir / "m.obj");
   EXPECT_EQ(back.mesh.vertices, mesh.vertices);
   EXPECT_EQ(back.mesh.faces, mesh.faces);
-  EXPECT_THAT(testing::ReadBytes(dir / "m.obj"), ::testing::StartsWith("# units mm\n# frame body\n"));
+  EXPECT_THAT(testing::ReadBytes(dir / "m.obj"),
+              ::testing::StartsWith("# units mm\n# frame body\n"));
 }
 
 TEST(ObjRead, MalformedFilesAreInputErrors) {
@@ -116,8 +117,8 @@ TEST(ObjRead, MalformedFilesAreInputErrors) {
   }
   // Vertices only: a mesh needs faces.
   WriteBytes(dir / "nofaces.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
-  ExpectInputError([&] { ReadMesh(FixtureOptions(), dir / "nofaces.obj"); },
-                   dir / "nofaces.obj", "has no faces");
+  ExpectInputError([&] { ReadMesh(FixtureOptions(), dir / "nofaces.obj"); }, dir / "nofaces.obj",
+                   "has no faces");
   // NaN vertex in a mesh.
   WriteBytes(dir / "nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n");
   ExpectInputError([&] { ReadMesh(FixtureOptions(), dir / "nan.obj"); }, dir / "nan.obj",

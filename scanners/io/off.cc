@@ -17,8 +17,7 @@ namespace {
 
 class OffParser {
  public:
-  OffParser(const ReadOptions& options, const std::filesystem::path& file,
-            std::string_view bytes)
+  OffParser(const ReadOptions& options, const std::filesystem::path& file, std::string_view bytes)
       : options_(options), file_(file), lines_(bytes) {}
 
   RawScan Parse() {
@@ -90,7 +89,8 @@ class OffParser {
 
   double Number(std::size_t t) {
     double v = 0.0;
-    if (!ParseDouble(tokens_[t], &v)) Fail(file_, Where() + ": " + Quote(tokens_[t]) + " is not a number");
+    if (!ParseDouble(tokens_[t], &v))
+      Fail(file_, Where() + ": " + Quote(tokens_[t]) + " is not a number");
     return v;
   }
 
@@ -104,8 +104,9 @@ class OffParser {
     if (normals_) raw_.fields.insert(raw_.fields.end(), {"nx", "ny", "nz"});
     if (colors_) raw_.fields.insert(raw_.fields.end(), {"red", "green", "blue"});
     for (Eigen::Index i = 0; i < num_vertices_; ++i) {
-      if (!NextLine()) Fail(file_, "file ends after " + std::to_string(i) + " of " +
-                                       std::to_string(num_vertices_) + " vertices (truncated)");
+      if (!NextLine())
+        Fail(file_, "file ends after " + std::to_string(i) + " of " +
+                        std::to_string(num_vertices_) + " vertices (truncated)");
       const std::size_t n = tokens_.size();
       if (n != base && !(colors_ && (n == base + 3 || n == base + 4))) {
         Fail(file_, Where() + ": a vertex needs " + std::to_string(base) +
@@ -113,7 +114,8 @@ class OffParser {
                         std::to_string(n));
       }
       for (int c = 0; c < 3; ++c) cloud.points(i, c) = Number(static_cast<std::size_t>(c));
-      for (int c = 0; c < 3 && normals_; ++c) cloud.normals(i, c) = Number(3 + static_cast<std::size_t>(c));
+      for (int c = 0; c < 3 && normals_; ++c)
+        cloud.normals(i, c) = Number(3 + static_cast<std::size_t>(c));
       for (std::size_t t = 3 + (normals_ ? 3 : 0); t < base; ++t) Number(t);  // texture: checked
       for (int c = 0; c < 3 && colors_; ++c) {
         const std::size_t t = base + static_cast<std::size_t>(c);
@@ -126,11 +128,13 @@ class OffParser {
   void Faces() {
     raw_.faces_in_file = num_faces_;
     for (std::int64_t f = 0; f < num_faces_; ++f) {
-      if (!NextLine()) Fail(file_, "file ends after " + std::to_string(f) + " of " +
-                                       std::to_string(num_faces_) + " faces (truncated)");
+      if (!NextLine())
+        Fail(file_, "file ends after " + std::to_string(f) + " of " + std::to_string(num_faces_) +
+                        " faces (truncated)");
       std::int64_t n = 0;
       if (!ParseInt64(tokens_[0], &n) || n < 3) {
-        Fail(file_, Where() + ": a face starts with its vertex count (>= 3), found " + Quote(tokens_[0]));
+        Fail(file_,
+             Where() + ": a face starts with its vertex count (>= 3), found " + Quote(tokens_[0]));
       }
       const auto extra = static_cast<std::int64_t>(tokens_.size()) - 1 - n;
       if (extra < 0 || extra > 4) {

@@ -3,8 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "scanners/io/io_test_util.h"
 #include "scanners/io/scan_io.h"
+#include "tests/support/io_test_util.h"
 #include "tests/support/test_support.h"
 
 namespace bespoke {
@@ -33,7 +33,8 @@ TEST(OffRead, QuadsCommentsAndCountsOnTheKeywordLine) {
 
 TEST(OffRead, ColouredAndNormalVariants) {
   TempDir dir;
-  WriteBytes(dir / "c.off", "COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 1.0 0 1\n0 1 0 0 0 9\n3 0 1 2\n");
+  WriteBytes(dir / "c.off",
+             "COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 1.0 0 1\n0 1 0 0 0 9\n3 0 1 2\n");
   const Scan coff = ReadScan(FixtureOptions(), dir / "c.off");
   ASSERT_TRUE(coff.cloud.has_colors());
   EXPECT_EQ(coff.cloud.colors(0, 0), 255);

@@ -85,19 +85,34 @@ void Store(Target target, Eigen::VectorXd* scalar, Eigen::Index i, double value,
            std::uint32_t packed, RawScan* raw) {
   PointCloud& c = raw->cloud;
   switch (target) {
-    case Target::kX: c.points(i, 0) = value; break;
-    case Target::kY: c.points(i, 1) = value; break;
-    case Target::kZ: c.points(i, 2) = value; break;
-    case Target::kNx: c.normals(i, 0) = value; break;
-    case Target::kNy: c.normals(i, 1) = value; break;
-    case Target::kNz: c.normals(i, 2) = value; break;
+    case Target::kX:
+      c.points(i, 0) = value;
+      break;
+    case Target::kY:
+      c.points(i, 1) = value;
+      break;
+    case Target::kZ:
+      c.points(i, 2) = value;
+      break;
+    case Target::kNx:
+      c.normals(i, 0) = value;
+      break;
+    case Target::kNy:
+      c.normals(i, 1) = value;
+      break;
+    case Target::kNz:
+      c.normals(i, 2) = value;
+      break;
     case Target::kRgb:
       c.colors(i, 0) = static_cast<std::uint8_t>((packed >> 16) & 0xff);
       c.colors(i, 1) = static_cast<std::uint8_t>((packed >> 8) & 0xff);
       c.colors(i, 2) = static_cast<std::uint8_t>(packed & 0xff);
       break;
-    case Target::kScalar: (*scalar)[i] = value; break;
-    case Target::kSkip: break;
+    case Target::kScalar:
+      (*scalar)[i] = value;
+      break;
+    case Target::kSkip:
+      break;
   }
 }
 
@@ -116,19 +131,26 @@ void ReadColumns(const PcdHeader& h, const Layout& layout, const std::vector<con
       const char* src = bases[f] + first * strides[f];
       double* column = nullptr;  // Eigen matrices are column-major: columns are contiguous
       switch (target) {
-        case Target::kX: case Target::kY: case Target::kZ:
+        case Target::kX:
+        case Target::kY:
+        case Target::kZ:
           column = c.points.col(static_cast<int>(target) - static_cast<int>(Target::kX)).data();
           break;
-        case Target::kNx: case Target::kNy: case Target::kNz:
+        case Target::kNx:
+        case Target::kNy:
+        case Target::kNz:
           column = c.normals.col(static_cast<int>(target) - static_cast<int>(Target::kNx)).data();
           break;
-        case Target::kScalar: column = scalars[f]->data(); break;
+        case Target::kScalar:
+          column = scalars[f]->data();
+          break;
         case Target::kRgb:
           for (Eigen::Index i = 0; i < count; ++i) {
             Store(target, nullptr, first + i, 0.0, LoadUint32Le(src + i * strides[f]), raw);
           }
           break;
-        case Target::kSkip: break;
+        case Target::kSkip:
+          break;
       }
       if (column) ConvertColumn(src, strides[f], h.fields[f].scalar, false, count, column + first);
     }
@@ -266,9 +288,15 @@ RawScan ReadPcd(const ReadOptions& options, const std::filesystem::path& file,
   const Layout layout = MakeLayout(header, &raw);
   const std::string_view data = bytes.substr(header.data_offset);
   switch (header.encoding) {
-    case PcdEncoding::kAscii: ReadAscii(file, header, layout, data, &raw); break;
-    case PcdEncoding::kBinary: ReadBinary(file, header, layout, data, &raw); break;
-    case PcdEncoding::kBinaryCompressed: ReadCompressed(file, header, layout, data, &raw); break;
+    case PcdEncoding::kAscii:
+      ReadAscii(file, header, layout, data, &raw);
+      break;
+    case PcdEncoding::kBinary:
+      ReadBinary(file, header, layout, data, &raw);
+      break;
+    case PcdEncoding::kBinaryCompressed:
+      ReadCompressed(file, header, layout, data, &raw);
+      break;
   }
   return raw;
 }

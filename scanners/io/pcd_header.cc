@@ -87,14 +87,17 @@ class PcdHeaderParser {
     }
   }
 
-  void Fields(const std::vector<std::string_view>& names, const std::vector<std::string_view>& sizes,
-              const std::vector<std::string_view>& types, const std::vector<std::string_view>& counts) {
+  void Fields(const std::vector<std::string_view>& names,
+              const std::vector<std::string_view>& sizes,
+              const std::vector<std::string_view>& types,
+              const std::vector<std::string_view>& counts) {
     if (names.empty()) Fail(file_, "PCD header has no FIELDS line");
     if (sizes.size() != names.size() || types.size() != names.size() ||
         (!counts.empty() && counts.size() != names.size())) {
-      Fail(file_, "PCD header: FIELDS has " + std::to_string(names.size()) + " names but SIZE has " +
-                      std::to_string(sizes.size()) + ", TYPE " + std::to_string(types.size()) +
-                      " and COUNT " + std::to_string(counts.size()) + " values");
+      Fail(file_, "PCD header: FIELDS has " + std::to_string(names.size()) +
+                      " names but SIZE has " + std::to_string(sizes.size()) + ", TYPE " +
+                      std::to_string(types.size()) + " and COUNT " + std::to_string(counts.size()) +
+                      " values");
     }
     for (std::size_t i = 0; i < names.size(); ++i) {
       PcdField f;
@@ -155,8 +158,8 @@ class PcdHeaderParser {
     const std::int64_t wh = header_.width * header_.height;
     if (!have_points) header_.points = wh;
     if (header_.points != wh) {
-      Fail(file_, "PCD header: POINTS " + std::to_string(header_.points) + " is not WIDTH * HEIGHT = " +
-                      std::to_string(wh));
+      Fail(file_, "PCD header: POINTS " + std::to_string(header_.points) +
+                      " is not WIDTH * HEIGHT = " + std::to_string(wh));
     }
   }
 
@@ -185,9 +188,12 @@ PcdHeader ParsePcdHeader(const ReadOptions& options, const std::filesystem::path
 
 std::string ToString(PcdEncoding encoding) {
   switch (encoding) {
-    case PcdEncoding::kAscii: return "ascii";
-    case PcdEncoding::kBinary: return "binary";
-    case PcdEncoding::kBinaryCompressed: return "binary_compressed";
+    case PcdEncoding::kAscii:
+      return "ascii";
+    case PcdEncoding::kBinary:
+      return "binary";
+    case PcdEncoding::kBinaryCompressed:
+      return "binary_compressed";
   }
   return "ascii";
 }

@@ -25,12 +25,12 @@ namespace bespoke::io {
 
 struct PcdField {
   std::string name;
-  int size = 4;        // bytes of one value
-  char type = 'F';     // 'F', 'I' or 'U'
+  int size = 4;     // bytes of one value
+  char type = 'F';  // 'F', 'I' or 'U'
   std::int64_t count = 1;
-  bool readable = true;  // false for 8-byte integers (skipped: no exact double)
+  bool readable = true;                      // false for 8-byte integers (skipped: no exact double)
   ScalarType scalar = ScalarType::kFloat32;  // when readable
-  std::int64_t offset = 0;  // byte offset of its first value inside a point
+  std::int64_t offset = 0;                   // byte offset of its first value inside a point
 };
 
 struct PcdHeader {
@@ -38,8 +38,8 @@ struct PcdHeader {
   std::int64_t width = 0, height = 1, points = 0;
   std::int64_t point_bytes = 0;  // sum of size * count
   PcdEncoding encoding = PcdEncoding::kAscii;
-  std::size_t data_offset = 0;   // first byte after the DATA line
-  std::int64_t data_line = 0;    // line number of the first data line
+  std::size_t data_offset = 0;                 // first byte after the DATA line
+  std::int64_t data_line = 0;                  // line number of the first data line
   int FindField(std::string_view name) const;  // index, or -1
 };
 

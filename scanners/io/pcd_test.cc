@@ -8,8 +8,8 @@
 #include <cstring>
 #include <limits>
 
-#include "scanners/io/io_test_util.h"
 #include "scanners/io/scan_io.h"
+#include "tests/support/io_test_util.h"
 #include "tests/support/test_support.h"
 
 namespace bespoke {
@@ -45,7 +45,8 @@ std::string Header(const std::string& data) {
          "SIZE 4 4 4 4 4 4 4 4 1 2 4 8\n"
          "TYPE F F F F U F F F U I F F\n"
          "COUNT 1 1 1 1 1 1 1 1 1 1 3 1\n"
-         "WIDTH 3\nHEIGHT 2\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 6\nDATA " + data + "\n";
+         "WIDTH 3\nHEIGHT 2\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 6\nDATA " +
+         data + "\n";
 }
 
 // The values of point i, in field order (NaN position for points 1 and 4).
@@ -148,9 +149,12 @@ TEST(PcdRead, AsciiWithPackedRgbAsIntegerAndAsFloat) {
   const std::string text =
       "VERSION .7\nFIELDS x y z rgb intensity\nSIZE 4 4 4 4 4\nTYPE F F F F F\nCOUNT 1 1 1 1 1\n"
       "WIDTH 3\nHEIGHT 1\nPOINTS 3\nDATA ascii\n"
-      "1 2 3 " + std::to_string(packed) + " 0.5\n"
+      "1 2 3 " +
+      std::to_string(packed) +
+      " 0.5\n"
       "nan nan nan 0 0\n"
-      "4 5 6 " + std::string(buffer) + " 1e-2\n";
+      "4 5 6 " +
+      std::string(buffer) + " 1e-2\n";
   WriteBytes(dir / "a.pcd", text);
   const Scan scan = ReadScan(FixtureOptions(), dir / "a.pcd");
   ASSERT_EQ(scan.cloud.size(), 2);
@@ -278,8 +282,8 @@ TEST(PcdMalformed, HugeHeadersParseInLinearTime) {
     sizes += " 1";
     types += " U";
   }
-  const std::string pcd = "VERSION 0.7\n" + fields + "\n" + sizes + "\n" + types +
-                          "\nWIDTH 0\nDATA binary\n";
+  const std::string pcd =
+      "VERSION 0.7\n" + fields + "\n" + sizes + "\n" + types + "\nWIDTH 0\nDATA binary\n";
   EXPECT_EQ(ReadScanFromBytes(FixtureOptions(), "h.pcd", pcd).report.fields.size(), 200003u);
 }
 
@@ -289,7 +293,8 @@ TEST(PcdMalformed, NaNOnlyOrganisedCloud) {
   for (int i = 0; i < 12; ++i) Put<float>(&s, kNaN);
   ReadOptions options = FixtureOptions();
   options.min_finite_points = 1;
-  ExpectScanRejected(dir / "nan.pcd", s, "only 0 finite points (4 NaN/Inf points dropped)", options);
+  ExpectScanRejected(dir / "nan.pcd", s, "only 0 finite points (4 NaN/Inf points dropped)",
+                     options);
 }
 
 }  // namespace

@@ -39,7 +39,8 @@ std::vector<OutField> Fields(const PointCloud& cloud) {
   const char* xyz[] = {"x", "y", "z"};
   const char* nxyz[] = {"normal_x", "normal_y", "normal_z"};
   for (int c = 0; c < 3; ++c) {
-    fields.push_back({xyz[c], [&cloud, c](Eigen::Index i) { return SafeFloat(cloud.points(i, c)); }});
+    fields.push_back(
+        {xyz[c], [&cloud, c](Eigen::Index i) { return SafeFloat(cloud.points(i, c)); }});
   }
   if (cloud.has_normals()) {
     for (int c = 0; c < 3; ++c) {
@@ -48,8 +49,8 @@ std::vector<OutField> Fields(const PointCloud& cloud) {
     }
   }
   if (cloud.has_colors()) {
-    fields.push_back({"rgb", [&cloud](Eigen::Index i) { return PackedAsFloat(Packed(cloud.colors, i)); },
-                      true});
+    fields.push_back(
+        {"rgb", [&cloud](Eigen::Index i) { return PackedAsFloat(Packed(cloud.colors, i)); }, true});
   }
   NameSet used;
   for (const OutField& f : fields) used.Unique(f.name);

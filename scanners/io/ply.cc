@@ -36,8 +36,8 @@ class ItemReader {
 
 class BinaryItemReader : public ItemReader {
  public:
-  BinaryItemReader(const std::filesystem::path& file, std::string_view bytes,
-                   std::size_t offset, bool big_endian)
+  BinaryItemReader(const std::filesystem::path& file, std::string_view bytes, std::size_t offset,
+                   bool big_endian)
       : file_(file), bytes_(bytes), pos_(offset), big_endian_(big_endian) {}
 
   void Read(const PlyElement& element, int wanted_list, std::vector<double>* values,
@@ -54,8 +54,8 @@ class BinaryItemReader : public ItemReader {
       const std::int64_t item = SizeOf(p.type);
       const std::size_t left = bytes_.size() - pos_;  // Take() keeps pos_ <= size
       if (n < 0 || static_cast<double>(left) < n * static_cast<double>(item)) {
-        Fail(file_, Where() + ": list '" + p.name + "' of element '" + element.name +
-                        "' has " + std::to_string(static_cast<std::int64_t>(n)) +
+        Fail(file_, Where() + ": list '" + p.name + "' of element '" + element.name + "' has " +
+                        std::to_string(static_cast<std::int64_t>(n)) +
                         " items, which do not fit in the " + std::to_string(left) +
                         " bytes left (bad list count or truncated file)");
       }
@@ -111,8 +111,8 @@ class BinaryItemReader : public ItemReader {
 
 class AsciiItemReader : public ItemReader {
  public:
-  AsciiItemReader(const std::filesystem::path& file, std::string_view bytes,
-                  std::size_t offset, std::int64_t first_line)
+  AsciiItemReader(const std::filesystem::path& file, std::string_view bytes, std::size_t offset,
+                  std::int64_t first_line)
       : file_(file), lines_(bytes.substr(offset), offset, first_line) {}
 
   void Read(const PlyElement& element, int wanted_list, std::vector<double>* values,
@@ -120,8 +120,8 @@ class AsciiItemReader : public ItemReader {
     std::string_view line;
     do {
       if (!lines_.Next(&line)) {
-        Fail(file_, "file ends before all " + std::to_string(element.count) + " '" +
-                        element.name + "' items were read (truncated, line " +
+        Fail(file_, "file ends before all " + std::to_string(element.count) + " '" + element.name +
+                        "' items were read (truncated, line " +
                         std::to_string(lines_.line_number() + 1) + ")");
       }
     } while (Tokenize(line, &tokens_) == 0);
@@ -197,8 +197,8 @@ enum class Slot { kX, kY, kZ, kNx, kNy, kNz, kRed, kGreen, kBlue, kScalar };
 
 // Where each scalar vertex property goes.
 struct VertexLayout {
-  std::vector<Slot> slots;          // one per scalar property, in order
-  std::vector<bool> is_float;       // its type is float/double
+  std::vector<Slot> slots;                // one per scalar property, in order
+  std::vector<bool> is_float;             // its type is float/double
   std::vector<std::string> scalar_names;  // for kScalar slots, in order
   bool normals = false;
   bool colors = false;
@@ -246,8 +246,7 @@ VertexLayout MakeLayout(const std::filesystem::path& file, const PlyElement& ver
 // Binary vertices without list properties: one fixed-size block, converted
 // column by column (the common case, and the fast one).
 void ReadVertexBlock(const PlyElement& element, const VertexLayout& layout, const char* block,
-                     bool big_endian, const std::vector<Eigen::VectorXd*>& scalars,
-                     RawScan* raw) {
+                     bool big_endian, const std::vector<Eigen::VectorXd*>& scalars, RawScan* raw) {
   PointCloud& cloud = raw->cloud;
   const Eigen::Index n = element.count;
   const std::int64_t stride = element.MinBinaryBytes();
@@ -282,8 +281,8 @@ void ReadVertexBlock(const PlyElement& element, const VertexLayout& layout, cons
   }
 }
 
-void ReadVertices(const std::filesystem::path& file, const PlyElement& element,
-                  ItemReader* reader, bool big_endian, RawScan* raw) {
+void ReadVertices(const std::filesystem::path& file, const PlyElement& element, ItemReader* reader,
+                  bool big_endian, RawScan* raw) {
   const VertexLayout layout = MakeLayout(file, element);
   const Eigen::Index n = element.count;
   PointCloud& cloud = raw->cloud;
@@ -309,16 +308,36 @@ void ReadVertices(const std::filesystem::path& file, const PlyElement& element,
     for (std::size_t k = 0; k < values.size(); ++k) {
       const double v = values[k];
       switch (layout.slots[k]) {
-        case Slot::kX: cloud.points(i, 0) = v; break;
-        case Slot::kY: cloud.points(i, 1) = v; break;
-        case Slot::kZ: cloud.points(i, 2) = v; break;
-        case Slot::kNx: cloud.normals(i, 0) = v; break;
-        case Slot::kNy: cloud.normals(i, 1) = v; break;
-        case Slot::kNz: cloud.normals(i, 2) = v; break;
-        case Slot::kRed: cloud.colors(i, 0) = ColorByte(v, layout.is_float[k]); break;
-        case Slot::kGreen: cloud.colors(i, 1) = ColorByte(v, layout.is_float[k]); break;
-        case Slot::kBlue: cloud.colors(i, 2) = ColorByte(v, layout.is_float[k]); break;
-        case Slot::kScalar: (*scalars[s++])[i] = v; break;
+        case Slot::kX:
+          cloud.points(i, 0) = v;
+          break;
+        case Slot::kY:
+          cloud.points(i, 1) = v;
+          break;
+        case Slot::kZ:
+          cloud.points(i, 2) = v;
+          break;
+        case Slot::kNx:
+          cloud.normals(i, 0) = v;
+          break;
+        case Slot::kNy:
+          cloud.normals(i, 1) = v;
+          break;
+        case Slot::kNz:
+          cloud.normals(i, 2) = v;
+          break;
+        case Slot::kRed:
+          cloud.colors(i, 0) = ColorByte(v, layout.is_float[k]);
+          break;
+        case Slot::kGreen:
+          cloud.colors(i, 1) = ColorByte(v, layout.is_float[k]);
+          break;
+        case Slot::kBlue:
+          cloud.colors(i, 2) = ColorByte(v, layout.is_float[k]);
+          break;
+        case Slot::kScalar:
+          (*scalars[s++])[i] = v;
+          break;
       }
     }
   }
@@ -368,8 +387,8 @@ RawScan ReadPly(const ReadOptions& options, const std::filesystem::path& file,
   if (header.encoding == PlyEncoding::kAscii) {
     reader = std::make_unique<AsciiItemReader>(file, bytes, header.data_offset, header.data_line);
   } else {
-    reader = std::make_unique<BinaryItemReader>(
-        file, bytes, header.data_offset, header.encoding == PlyEncoding::kBinaryBigEndian);
+    reader = std::make_unique<BinaryItemReader>(file, bytes, header.data_offset,
+                                                header.encoding == PlyEncoding::kBinaryBigEndian);
   }
   std::vector<int> triangles;
   std::vector<double> values;

@@ -194,23 +194,34 @@ PlyHeader ParsePlyHeader(const ReadOptions& options, const std::filesystem::path
 
 std::string ToString(PlyEncoding encoding) {
   switch (encoding) {
-    case PlyEncoding::kAscii: return "ascii";
-    case PlyEncoding::kBinaryLittleEndian: return "binary_little_endian";
-    case PlyEncoding::kBinaryBigEndian: return "binary_big_endian";
+    case PlyEncoding::kAscii:
+      return "ascii";
+    case PlyEncoding::kBinaryLittleEndian:
+      return "binary_little_endian";
+    case PlyEncoding::kBinaryBigEndian:
+      return "binary_big_endian";
   }
   return "ascii";
 }
 
 const char* PlyTypeName(ScalarType type) {
   switch (type) {
-    case ScalarType::kInt8: return "char";
-    case ScalarType::kUint8: return "uchar";
-    case ScalarType::kInt16: return "short";
-    case ScalarType::kUint16: return "ushort";
-    case ScalarType::kInt32: return "int";
-    case ScalarType::kUint32: return "uint";
-    case ScalarType::kFloat32: return "float";
-    case ScalarType::kFloat64: return "double";
+    case ScalarType::kInt8:
+      return "char";
+    case ScalarType::kUint8:
+      return "uchar";
+    case ScalarType::kInt16:
+      return "short";
+    case ScalarType::kUint16:
+      return "ushort";
+    case ScalarType::kInt32:
+      return "int";
+    case ScalarType::kUint32:
+      return "uint";
+    case ScalarType::kFloat32:
+      return "float";
+    case ScalarType::kFloat64:
+      return "double";
   }
   return "float";
 }

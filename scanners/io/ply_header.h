@@ -46,8 +46,8 @@ struct PlyElement {
 struct PlyHeader {
   PlyEncoding encoding = PlyEncoding::kAscii;
   std::vector<PlyElement> elements;
-  std::size_t data_offset = 0;   // byte offset of the first data byte
-  std::int64_t data_line = 0;    // line number of the first data line (ascii)
+  std::size_t data_offset = 0;  // byte offset of the first data byte
+  std::int64_t data_line = 0;   // line number of the first data line (ascii)
 };
 
 PlyHeader ParsePlyHeader(const ReadOptions& options, const std::filesystem::path& file,

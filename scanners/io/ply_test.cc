@@ -7,8 +7,8 @@
 #include <cstring>
 #include <limits>
 
-#include "scanners/io/io_test_util.h"
 #include "scanners/io/scan_io.h"
+#include "tests/support/io_test_util.h"
 #include "tests/support/test_support.h"
 
 namespace bespoke {
@@ -33,17 +33,17 @@ void Put(std::string* out, T value, bool big_endian) {
 // Two vertices with one property of every type (names and aliases mixed), an
 // unknown element with a list between vertex and face, and a quad.
 std::string EveryTypePly(bool big_endian) {
-  std::string s = std::string("ply\nformat ") +
-                  (big_endian ? "binary_big_endian" : "binary_little_endian") +
-                  " 1.0\ncomment made in a test\nobj_info nothing\n"
-                  "element vertex 4\n"
-                  "property float32 x\nproperty double y\nproperty int16 z\n"
-                  "property char c8\nproperty uint8 red\nproperty uchar green\nproperty uchar blue\n"
-                  "property ushort u16\nproperty int i32\nproperty uint32 u32\n"
-                  "property list uchar float junk_list\n"
-                  "element material 2\nproperty list int int8 ids\nproperty float64 w\n"
-                  "element face 1\nproperty list uint16 uint vertex_indices\n"
-                  "end_header\n";
+  std::string s =
+      std::string("ply\nformat ") + (big_endian ? "binary_big_endian" : "binary_little_endian") +
+      " 1.0\ncomment made in a test\nobj_info nothing\n"
+      "element vertex 4\n"
+      "property float32 x\nproperty double y\nproperty int16 z\n"
+      "property char c8\nproperty uint8 red\nproperty uchar green\nproperty uchar blue\n"
+      "property ushort u16\nproperty int i32\nproperty uint32 u32\n"
+      "property list uchar float junk_list\n"
+      "element material 2\nproperty list int int8 ids\nproperty float64 w\n"
+      "element face 1\nproperty list uint16 uint vertex_indices\n"
+      "end_header\n";
   for (int i = 0; i < 4; ++i) {
     Put<float>(&s, 0.5f + i, big_endian);
     Put<double>(&s, -1.0 / 3.0 * i, big_endian);
@@ -254,7 +254,8 @@ TEST(PlyMalformed, HeaderAndDataCorpus) {
       {Header("element face 0\nend_header\n"), "no 'vertex' element"},
       {Header("element vertex 1\nproperty float x\nproperty float y\nend_header\n1 2\n"),
        "needs scalar properties x, y and z"},
-      {Header("element vertex 2\n") + kXyz + "end_header\n1 2 3\n4 5        \n", "line 9: too few values"},
+      {Header("element vertex 2\n") + kXyz + "end_header\n1 2 3\n4 5        \n",
+       "line 9: too few values"},
       {Header("element vertex 2\n") + kXyz + "end_header\n1 2 3\n4 5 6 7\n",
        "line 9: expected 3 values"},
       {Header("element vertex 2\n") + kXyz + "end_header\n1 2 3\n4 five 6\n",

@@ -62,7 +62,8 @@ std::vector<std::pair<std::string, Column>> VertexColumns(const PointCloud& clou
   for (const auto& column : columns) used.Unique(column.first);
   for (const auto& [name, values] : cloud.scalars) {
     if (values.size() != cloud.size()) continue;
-    columns.push_back({used.Unique(SafeName(name)), Column{nullptr, nullptr, &values, 0, ScalarType::kFloat64}});
+    columns.push_back(
+        {used.Unique(SafeName(name)), Column{nullptr, nullptr, &values, 0, ScalarType::kFloat64}});
   }
   return columns;
 }

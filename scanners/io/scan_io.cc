@@ -4,10 +4,10 @@
 #include "scanners/io/scan_io.h"
 
 #include <algorithm>
-#include <vector>
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "scanners/core/atomic_file.h"
 #include "scanners/core/errors.h"
@@ -75,8 +75,10 @@ FileFormat DetectFormat(const std::filesystem::path& file, std::string_view byte
   }
   double number = 0.0;
   if (io::ParseDouble(token, &number)) return FileFormat::kXyz;
-  Fail(file, "unknown file format: not PLY, PCD, OBJ, OFF, STL or XYZ text by content, and "
-             "the extension '" + ext + "' does not say");
+  Fail(file,
+       "unknown file format: not PLY, PCD, OBJ, OFF, STL or XYZ text by content, and "
+       "the extension '" +
+           ext + "' does not say");
 }
 
 io::RawScan ReadRaw(const ReadOptions& options, const std::filesystem::path& file,
@@ -84,12 +86,18 @@ io::RawScan ReadRaw(const ReadOptions& options, const std::filesystem::path& fil
   options.Check();
   *format = DetectFormat(file, bytes);
   switch (*format) {
-    case FileFormat::kPly: return io::ReadPly(options, file, bytes);
-    case FileFormat::kPcd: return io::ReadPcd(options, file, bytes);
-    case FileFormat::kObj: return io::ReadObj(options, file, bytes);
-    case FileFormat::kXyz: return io::ReadXyz(options, file, bytes);
-    case FileFormat::kOff: return io::ReadOff(options, file, bytes);
-    case FileFormat::kStl: return io::ReadStl(options, file, bytes);
+    case FileFormat::kPly:
+      return io::ReadPly(options, file, bytes);
+    case FileFormat::kPcd:
+      return io::ReadPcd(options, file, bytes);
+    case FileFormat::kObj:
+      return io::ReadObj(options, file, bytes);
+    case FileFormat::kXyz:
+      return io::ReadXyz(options, file, bytes);
+    case FileFormat::kOff:
+      return io::ReadOff(options, file, bytes);
+    case FileFormat::kStl:
+      return io::ReadStl(options, file, bytes);
   }
   throw InternalError("unhandled file format");
 }
@@ -156,14 +164,14 @@ std::optional<LengthUnit> ResolveUnit(const ReadOptions& options, const ReadRepo
 std::string UnitProblem(const ReadReport& report, const Eigen::MatrixX3d& points) {
   const Eigen::AlignedBox3d& box = report.bounds_file_units;
   const double extent = box.isEmpty() ? 0.0 : box.sizes().maxCoeff();
-  return "cannot tell the length unit: the largest side of the bounding box is " +
-         Number(extent) + " file units (" + Number(RobustExtent(points)) +
+  return "cannot tell the length unit: the largest side of the bounding box is " + Number(extent) +
+         " file units (" + Number(RobustExtent(points)) +
          " without the outermost 1 % of points on each side), which is not a body's size "
          "(0.5 m to 2.6 m) in mm, cm, dm or m";
 }
 
-Scan FinishScan(const ReadOptions& options, const std::filesystem::path& file,
-                FileFormat format, io::RawScan raw) {
+Scan FinishScan(const ReadOptions& options, const std::filesystem::path& file, FileFormat format,
+                io::RawScan raw) {
   Scan scan;
   ReadReport& report = scan.report;
   report = MakeReport(file, format, raw);
@@ -186,15 +194,16 @@ Scan FinishScan(const ReadOptions& options, const std::filesystem::path& file,
   }
   report.bounds_file_units = BoundsOf(scan.cloud.points);
   const auto unit = ResolveUnit(options, report, scan.cloud.points);
-  if (!unit) Fail(file, UnitProblem(report, scan.cloud.points) + "; give it with --units mm|cm|dm|m");
+  if (!unit)
+    Fail(file, UnitProblem(report, scan.cloud.points) + "; give it with --units mm|cm|dm|m");
   report.unit = *unit;
   report.unit_guessed = !options.units.has_value();
   scan.cloud.points *= MillimetresPer(*unit);
   return scan;
 }
 
-Mesh FinishMesh(const ReadOptions& options, const std::filesystem::path& file,
-                FileFormat format, io::RawScan raw) {
+Mesh FinishMesh(const ReadOptions& options, const std::filesystem::path& file, FileFormat format,
+                io::RawScan raw) {
   if (format == FileFormat::kPcd || format == FileFormat::kXyz) {
     Fail(file, "is a point cloud (" + ToString(format) + "); a mesh with faces is needed");
   }
@@ -225,12 +234,18 @@ Mesh FinishMesh(const ReadOptions& options, const std::filesystem::path& file,
 
 std::string ToString(FileFormat format) {
   switch (format) {
-    case FileFormat::kPly: return "PLY";
-    case FileFormat::kPcd: return "PCD";
-    case FileFormat::kObj: return "OBJ";
-    case FileFormat::kXyz: return "XYZ";
-    case FileFormat::kOff: return "OFF";
-    case FileFormat::kStl: return "STL";
+    case FileFormat::kPly:
+      return "PLY";
+    case FileFormat::kPcd:
+      return "PCD";
+    case FileFormat::kObj:
+      return "OBJ";
+    case FileFormat::kXyz:
+      return "XYZ";
+    case FileFormat::kOff:
+      return "OFF";
+    case FileFormat::kStl:
+      return "STL";
   }
   return "unknown";
 }

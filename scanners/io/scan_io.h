@@ -52,9 +52,9 @@ struct ReadOptions {
 struct ReadReport {
   std::filesystem::path file;
   FileFormat format = FileFormat::kPly;
-  std::string encoding;              // "ascii", "binary_little_endian", "binary_compressed", ...
-  std::vector<std::string> fields;   // per-point properties in the file, e.g. x y z nx ny nz red
-  std::int64_t points_in_file = 0;   // as declared / found
+  std::string encoding;             // "ascii", "binary_little_endian", "binary_compressed", ...
+  std::vector<std::string> fields;  // per-point properties in the file, e.g. x y z nx ny nz red
+  std::int64_t points_in_file = 0;  // as declared / found
   std::int64_t non_finite_dropped = 0;
   std::int64_t faces_in_file = 0;
   LengthUnit unit = LengthUnit::kMillimetre;  // unit the file was read in

@@ -1,11 +1,12 @@
 // The front door: format detection by content before extension, writer
 // dispatch, atomic writes, and reading clouds from mesh files.
+#include "scanners/io/scan_io.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "scanners/io/io_test_util.h"
-#include "scanners/io/malformed_corpus.h"
-#include "scanners/io/scan_io.h"
+#include "tests/support/io_test_util.h"
+#include "tests/support/malformed_corpus.h"
 #include "tests/support/test_support.h"
 
 namespace bespoke {
@@ -23,8 +24,9 @@ TEST(ScanIoDetect, ContentWinsOverTheExtension) {
       "property float z\nend_header\n1 2 3\n";
   WriteBytes(dir / "really_ply.txt", ply);
   EXPECT_EQ(ReadScan(FixtureOptions(), dir / "really_ply.txt").report.format, FileFormat::kPly);
-  WriteBytes(dir / "pcd.xyz", "# comment\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n"
-                              "WIDTH 1\nDATA ascii\n1 2 3\n");
+  WriteBytes(dir / "pcd.xyz",
+             "# comment\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n"
+             "WIDTH 1\nDATA ascii\n1 2 3\n");
   EXPECT_EQ(ReadScan(FixtureOptions(), dir / "pcd.xyz").report.format, FileFormat::kPcd);
   WriteBytes(dir / "off.dat", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(ReadMesh(FixtureOptions(), dir / "off.dat").report.format, FileFormat::kOff);
@@ -108,7 +110,7 @@ TEST(ScanIoWrite, OverwritesAtomically) {
 }
 
 // The shared malformed corpus (also run through `bespoke info` by
-// pipeline/cmd_info_test.cc), read with default options.
+// pipeline/cli/cmd_info_test.cc), read with default options.
 TEST(ScanIoRead, MalformedCorpusIsRejected) {
   TempDir dir;
   const auto corpus = testing::MalformedCorpus();

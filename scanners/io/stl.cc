@@ -75,8 +75,8 @@ RawScan ReadBinary(const ReadOptions& options, const std::filesystem::path& file
   const std::int64_t count = LoadUint32Le(bytes.data() + 80);
   CheckCount(options, file, count, "number of triangles", "byte offset 80");
   if (count > static_cast<std::int64_t>(bytes.size() - 84) / 50) {
-    Fail(file, "byte offset 80: binary STL declares " + std::to_string(count) +
-                   " triangles (" + std::to_string(84 + 50 * count) + " bytes) but the file has " +
+    Fail(file, "byte offset 80: binary STL declares " + std::to_string(count) + " triangles (" +
+                   std::to_string(84 + 50 * count) + " bytes) but the file has " +
                    std::to_string(bytes.size()) + " bytes (truncated?)");
   }
   Merger merger;
@@ -90,7 +90,8 @@ RawScan ReadBinary(const ReadOptions& options, const std::filesystem::path& file
   }
   RawScan raw = merger.Finish(file, count, "binary");
   const auto extra = static_cast<std::int64_t>(bytes.size()) - 84 - 50 * count;
-  if (extra > 0) raw.warnings.push_back(std::to_string(extra) + " bytes after the triangles ignored");
+  if (extra > 0)
+    raw.warnings.push_back(std::to_string(extra) + " bytes after the triangles ignored");
   return raw;
 }
 
@@ -142,20 +143,22 @@ class AsciiStlParser {
     if (!fresh_) Next(true);
     fresh_ = false;
     if (tokens_[0] != key || (second && (tokens_.size() < 2 || tokens_[1] != second))) {
-      Fail(file_, Where() + ": expected '" + std::string(key) + (second ? std::string(" ") + second : "") +
-                      "', found " + Quote(tokens_[0]));
+      Fail(file_, Where() + ": expected '" + std::string(key) +
+                      (second ? std::string(" ") + second : "") + "', found " + Quote(tokens_[0]));
     }
   }
 
   void Vertex() {
     Expect("vertex");
     if (tokens_.size() != 4) {
-      Fail(file_, Where() + ": 'vertex' needs 3 numbers, found " + std::to_string(tokens_.size() - 1));
+      Fail(file_,
+           Where() + ": 'vertex' needs 3 numbers, found " + std::to_string(tokens_.size() - 1));
     }
     double xyz[3];
     for (int c = 0; c < 3; ++c) {
       if (!ParseDouble(tokens_[static_cast<std::size_t>(c) + 1], &xyz[c])) {
-        Fail(file_, Where() + ": " + Quote(tokens_[static_cast<std::size_t>(c) + 1]) + " is not a number");
+        Fail(file_,
+             Where() + ": " + Quote(tokens_[static_cast<std::size_t>(c) + 1]) + " is not a number");
       }
     }
     merger_.Add(xyz[0], xyz[1], xyz[2]);

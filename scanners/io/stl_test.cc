@@ -5,8 +5,8 @@
 
 #include <cstring>
 
-#include "scanners/io/io_test_util.h"
 #include "scanners/io/scan_io.h"
+#include "tests/support/io_test_util.h"
 #include "tests/support/test_support.h"
 
 namespace bespoke {
@@ -44,8 +44,7 @@ std::string BinaryStl(const std::string& header_start = "made by a test") {
 
 void ExpectMerged(const Mesh& mesh) {
   ASSERT_EQ(mesh.mesh.num_vertices(), 5);
-  EXPECT_EQ(mesh.mesh.faces,
-            (Eigen::MatrixX3i(3, 3) << 0, 1, 2, 0, 2, 3, 1, 4, 2).finished());
+  EXPECT_EQ(mesh.mesh.faces, (Eigen::MatrixX3i(3, 3) << 0, 1, 2, 0, 2, 3, 1, 4, 2).finished());
   EXPECT_EQ(mesh.report.faces_in_file, 3);
   EXPECT_EQ(mesh.mesh.vertices(4, 0), static_cast<double>(1.0000001f));
 }

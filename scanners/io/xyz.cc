@@ -41,9 +41,15 @@ bool AllNumbers(const std::vector<std::string_view>& tokens) {
 // Column roles from names: 0-2 xyz, 3-5 normal, 6-8 colour, -1 scalar. The
 // first column of each name takes the role.
 std::vector<int> Roles(const std::vector<std::string>& names) {
-  static const std::vector<std::vector<std::string>> kNames = {
-      {"x"}, {"y"}, {"z"}, {"nx", "normal_x"}, {"ny", "normal_y"}, {"nz", "normal_z"},
-      {"r", "red"}, {"g", "green"}, {"b", "blue"}};
+  static const std::vector<std::vector<std::string>> kNames = {{"x"},
+                                                               {"y"},
+                                                               {"z"},
+                                                               {"nx", "normal_x"},
+                                                               {"ny", "normal_y"},
+                                                               {"nz", "normal_z"},
+                                                               {"r", "red"},
+                                                               {"g", "green"},
+                                                               {"b", "blue"}};
   std::vector<int> roles(names.size(), -1);
   bool taken[9] = {};
   for (std::size_t c = 0; c < names.size(); ++c) {
@@ -109,7 +115,8 @@ RawScan Assemble(const std::filesystem::path& file, std::vector<std::string> nam
       cloud.normals.col(role - 3) = values;
     } else if (role >= 6 && colors) {
       for (Eigen::Index i = 0; i < rows; ++i) {
-        cloud.colors(i, role - 6) = ColorByte(v[static_cast<std::size_t>(i)], unit_range && fractional);
+        cloud.colors(i, role - 6) =
+            ColorByte(v[static_cast<std::size_t>(i)], unit_range && fractional);
       }
     } else {
       cloud.scalars[scalar_names.Unique(names[c])] = values;
@@ -161,11 +168,12 @@ RawScan ReadXyz(const ReadOptions& options, const std::filesystem::path& file,
       Fail(file, where + ": expected " + std::to_string(columns.size()) + " values, found " +
                      std::to_string(tokens.size()));
     }
-    CheckCount(options, file, static_cast<std::int64_t>(columns[0].size()) + 1,
-               "number of points", where);
+    CheckCount(options, file, static_cast<std::int64_t>(columns[0].size()) + 1, "number of points",
+               where);
     for (std::size_t c = 0; c < tokens.size(); ++c) {
       double v = 0.0;
-      if (!ParseDouble(tokens[c], &v)) Fail(file, where + ": " + Quote(tokens[c]) + " is not a number");
+      if (!ParseDouble(tokens[c], &v))
+        Fail(file, where + ": " + Quote(tokens[c]) + " is not a number");
       columns[c].push_back(v);
     }
   }
@@ -189,13 +197,15 @@ std::string WriteXyz(const WriteOptions& options, const PointCloud& cloud, char 
     if (values.size() != cloud.size()) continue;
     std::string safe = name.empty() ? std::string("scalar") : name;
     for (char& c : safe) {
-      if (c == ' ' || c == '\t' || c == ',' || c == ';' || c == '#' || c == '\r' || c == '\n') c = '_';
+      if (c == ' ' || c == '\t' || c == ',' || c == ';' || c == '#' || c == '\r' || c == '\n')
+        c = '_';
     }
     names.push_back(used.Unique(safe));
     scalars.push_back(&values);
   }
   out += separator == ' ' ? "//" : "";
-  for (std::size_t k = 0; k < names.size(); ++k) out += (k ? std::string(1, separator) : "") + names[k];
+  for (std::size_t k = 0; k < names.size(); ++k)
+    out += (k ? std::string(1, separator) : "") + names[k];
   out += '\n';
   auto put = [&](double v, bool first_value) {
     if (!first_value) out += separator;

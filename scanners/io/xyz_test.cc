@@ -2,8 +2,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "scanners/io/io_test_util.h"
 #include "scanners/io/scan_io.h"
+#include "tests/support/io_test_util.h"
 #include "tests/support/test_support.h"
 
 namespace bespoke {

@@ -75,8 +75,8 @@ void CheckChart(const Chart& chart) {
   for (const Series& s : chart.series) {
     if (s.x.size() != s.y.size()) {
       throw InputError("chart '" + chart.title + "': series '" + s.label + "' has " +
-                       std::to_string(s.x.size()) + " x values but " +
-                       std::to_string(s.y.size()) + " y values");
+                       std::to_string(s.x.size()) + " x values but " + std::to_string(s.y.size()) +
+                       " y values");
     }
     if (chart.log_y && s.style == Series::Style::kBars) {
       throw InputError("chart '" + chart.title + "': bars need a linear y axis");
@@ -207,8 +207,10 @@ void DrawSeries(cairo_t* cr, const Chart& chart, const Axes& a, const Series& s,
         pen_down = false;
         continue;
       }
-      if (pen_down) cairo_line_to(cr, a.X(s.x[i]), a.Y(s.y[i]));
-      else cairo_move_to(cr, a.X(s.x[i]), a.Y(s.y[i]));
+      if (pen_down)
+        cairo_line_to(cr, a.X(s.x[i]), a.Y(s.y[i]));
+      else
+        cairo_move_to(cr, a.X(s.x[i]), a.Y(s.y[i]));
       pen_down = true;
     }
     cairo_stroke(cr);
@@ -261,14 +263,15 @@ void Draw(cairo_t* cr, const Chart& chart) {
   cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
-  Axes a{90.0, 40.0, chart.width_px - 110.0, chart.height_px - 100.0, {}, {},
+  Axes a{90.0,        40.0,       chart.width_px - 110.0, chart.height_px - 100.0, {}, {},
          chart.log_x, chart.log_y};
   // Bars without an explicit width take 80 % of their x spacing.
   std::vector<Series> resolved = chart.series;
   for (Series& s : resolved) {
     if (s.style == Series::Style::kBars && s.bar_width <= 0) {
       double spacing = std::numeric_limits<double>::infinity();
-      for (size_t i = 1; i < s.x.size(); ++i) spacing = std::min(spacing, std::abs(s.x[i] - s.x[i - 1]));
+      for (size_t i = 1; i < s.x.size(); ++i)
+        spacing = std::min(spacing, std::abs(s.x[i] - s.x[i - 1]));
       s.bar_width = std::isfinite(spacing) && spacing > 0 ? 0.8 * spacing : 1.0;
     }
   }
@@ -357,8 +360,8 @@ void WriteChart(const Chart& chart, const std::filesystem::path& file) {
       throw InternalError("cairo could not encode " + file.string());
     }
   } else if (ext == ".svg") {
-    cairo_surface_t* surface = cairo_svg_surface_create_for_stream(
-        &AppendToString, &bytes, chart.width_px, chart.height_px);
+    cairo_surface_t* surface = cairo_svg_surface_create_for_stream(&AppendToString, &bytes,
+                                                                   chart.width_px, chart.height_px);
     cairo_t* cr = cairo_create(surface);
     Draw(cr, chart);
     cairo_destroy(cr);

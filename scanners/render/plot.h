@@ -29,8 +29,8 @@ struct Series {
   Style style = Style::kLine;
   // RGB 0-1; negative = the next colour of the default palette.
   std::array<double, 3> color = {-1, -1, -1};
-  double bar_width = 0;      // kBars: width in x units; 0 = 80 % of the x spacing
-  bool dashed = false;       // kLine/kLinePoints: dashed line (reference lines, targets)
+  double bar_width = 0;  // kBars: width in x units; 0 = 80 % of the x spacing
+  bool dashed = false;   // kLine/kLinePoints: dashed line (reference lines, targets)
 };
 
 struct Chart {
@@ -38,9 +38,9 @@ struct Chart {
   std::string x_label;  // with units, e.g. "vertices"
   std::string y_label;  // with units, e.g. "time per vertex (us)"
   std::vector<Series> series;
-  bool log_x = false;   // base-10 logarithmic axes
+  bool log_x = false;  // base-10 logarithmic axes
   bool log_y = false;
-  int width_px = 900;   // PNG size in pixels; SVG in points
+  int width_px = 900;  // PNG size in pixels; SVG in points
   int height_px = 540;
   // Fixed axis ranges; when min >= max (default) the range fits the data.
   double x_min = 0, x_max = 0, y_min = 0, y_max = 0;

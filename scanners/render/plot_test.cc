@@ -48,7 +48,8 @@ TEST(WriteChart, WritesPngAndSvg) {
   chart.y_label = "time (us)";
   chart.log_x = true;
   chart.series.push_back({"ours", {1e4, 1e5, 1e6}, {2.0, 2.1, 2.2}, Series::Style::kLinePoints});
-  chart.series.push_back({"", {1e4, 1e6}, {3.0, 3.0}, Series::Style::kLine, {0.5, 0.5, 0.5}, 0, true});
+  chart.series.push_back(
+      {"", {1e4, 1e6}, {3.0, 3.0}, Series::Style::kLine, {0.5, 0.5, 0.5}, 0, true});
   WriteChart(chart, dir / "c.png");
   WriteChart(chart, dir / "c.svg");
   const std::string png = Slurp(dir / "c.png");

@@ -20,21 +20,31 @@ struct Projected {
 
 Projected Project(View view, const Eigen::Vector3d& p) {
   switch (view) {
-    case View::kFront: return {-p.x(), p.z(), p.y()};
-    case View::kBack: return {p.x(), p.z(), -p.y()};
-    case View::kRight: return {p.y(), p.z(), p.x()};
-    case View::kLeft: return {-p.y(), p.z(), -p.x()};
-    default: return {p.x(), p.y(), p.z()};
+    case View::kFront:
+      return {-p.x(), p.z(), p.y()};
+    case View::kBack:
+      return {p.x(), p.z(), -p.y()};
+    case View::kRight:
+      return {p.y(), p.z(), p.x()};
+    case View::kLeft:
+      return {-p.y(), p.z(), -p.x()};
+    default:
+      return {p.x(), p.y(), p.z()};
   }
 }
 
 Eigen::Vector3d TowardsViewer(View view) {
   switch (view) {
-    case View::kFront: return Eigen::Vector3d::UnitY();
-    case View::kBack: return -Eigen::Vector3d::UnitY();
-    case View::kRight: return Eigen::Vector3d::UnitX();
-    case View::kLeft: return -Eigen::Vector3d::UnitX();
-    default: return Eigen::Vector3d::UnitZ();
+    case View::kFront:
+      return Eigen::Vector3d::UnitY();
+    case View::kBack:
+      return -Eigen::Vector3d::UnitY();
+    case View::kRight:
+      return Eigen::Vector3d::UnitX();
+    case View::kLeft:
+      return -Eigen::Vector3d::UnitX();
+    default:
+      return Eigen::Vector3d::UnitZ();
   }
 }
 
@@ -58,10 +68,12 @@ struct Canvas {
 template <typename F>
 void ForEachPoint(const RenderScene& scene, F&& f) {
   if (scene.mesh) {
-    for (Eigen::Index v = 0; v < scene.mesh->num_vertices(); ++v) f(scene.mesh->vertices.row(v).transpose());
+    for (Eigen::Index v = 0; v < scene.mesh->num_vertices(); ++v)
+      f(scene.mesh->vertices.row(v).transpose());
   }
   if (scene.cloud) {
-    for (Eigen::Index v = 0; v < scene.cloud->size(); ++v) f(scene.cloud->points.row(v).transpose());
+    for (Eigen::Index v = 0; v < scene.cloud->size(); ++v)
+      f(scene.cloud->points.row(v).transpose());
   }
   for (const LabelledPoint& p : scene.points) f(p.position);
   for (const Polyline& l : scene.polylines) {
@@ -69,10 +81,12 @@ void ForEachPoint(const RenderScene& scene, F&& f) {
   }
 }
 
-void DrawMesh(const RenderOptions& o, const TriangleMesh& mesh, const Canvas& c, cv::Mat* image, cv::Mat* depth) {
+void DrawMesh(const RenderOptions& o, const TriangleMesh& mesh, const Canvas& c, cv::Mat* image,
+              cv::Mat* depth) {
   const Eigen::Vector3d towards = TowardsViewer(c.view);
   for (Eigen::Index f = 0; f < mesh.num_faces(); ++f) {
-    const Eigen::Vector3d a = mesh.vertices.row(mesh.faces(f, 0)), b = mesh.vertices.row(mesh.faces(f, 1)),
+    const Eigen::Vector3d a = mesh.vertices.row(mesh.faces(f, 0)),
+                          b = mesh.vertices.row(mesh.faces(f, 1)),
                           d = mesh.vertices.row(mesh.faces(f, 2));
     const Eigen::Vector3d n = (b - a).cross(d - a);
     const double area = n.norm();
@@ -81,20 +95,25 @@ void DrawMesh(const RenderOptions& o, const TriangleMesh& mesh, const Canvas& c,
     const Projected p[3] = {Project(c.view, a), Project(c.view, b), Project(c.view, d)};
     cv::Point2d q[3];
     for (int k = 0; k < 3; ++k) q[k] = c.Pixel(p[k]);
-    const double det = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[2].x - q[0].x) * (q[1].y - q[0].y);
+    const double det =
+        (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[2].x - q[0].x) * (q[1].y - q[0].y);
     if (std::abs(det) < 1e-12) continue;
     const int x0 = std::max(0, static_cast<int>(std::floor(std::min({q[0].x, q[1].x, q[2].x}))));
-    const int x1 = std::min(image->cols - 1, static_cast<int>(std::ceil(std::max({q[0].x, q[1].x, q[2].x}))));
+    const int x1 =
+        std::min(image->cols - 1, static_cast<int>(std::ceil(std::max({q[0].x, q[1].x, q[2].x}))));
     const int y0 = std::max(0, static_cast<int>(std::floor(std::min({q[0].y, q[1].y, q[2].y}))));
-    const int y1 = std::min(image->rows - 1, static_cast<int>(std::ceil(std::max({q[0].y, q[1].y, q[2].y}))));
+    const int y1 =
+        std::min(image->rows - 1, static_cast<int>(std::ceil(std::max({q[0].y, q[1].y, q[2].y}))));
     const cv::Vec3b color(static_cast<uchar>(std::min(255.0, o.surface[2] * shade)),
                           static_cast<uchar>(std::min(255.0, o.surface[1] * shade)),
                           static_cast<uchar>(std::min(255.0, o.surface[0] * shade)));
     for (int y = y0; y <= y1; ++y) {
       for (int x = x0; x <= x1; ++x) {
         const double px = x + 0.5, py = y + 0.5;
-        const double w1 = ((px - q[0].x) * (q[2].y - q[0].y) - (q[2].x - q[0].x) * (py - q[0].y)) / det;
-        const double w2 = ((q[1].x - q[0].x) * (py - q[0].y) - (px - q[0].x) * (q[1].y - q[0].y)) / det;
+        const double w1 =
+            ((px - q[0].x) * (q[2].y - q[0].y) - (q[2].x - q[0].x) * (py - q[0].y)) / det;
+        const double w2 =
+            ((q[1].x - q[0].x) * (py - q[0].y) - (px - q[0].x) * (q[1].y - q[0].y)) / det;
         const double w0 = 1 - w1 - w2;
         if (w0 < 0 || w1 < 0 || w2 < 0) continue;
         const float z = static_cast<float>(w0 * p[0].depth + w1 * p[1].depth + w2 * p[2].depth);
@@ -107,10 +126,11 @@ void DrawMesh(const RenderOptions& o, const TriangleMesh& mesh, const Canvas& c,
   }
 }
 
-void DrawCloud(const RenderOptions& o, const PointCloud& cloud, const Canvas& c, double radius_px, cv::Mat* image,
-               cv::Mat* depth) {
+void DrawCloud(const RenderOptions& o, const PointCloud& cloud, const Canvas& c, double radius_px,
+               cv::Mat* image, cv::Mat* depth) {
   const Eigen::Vector3d towards = TowardsViewer(c.view);
-  double near = -std::numeric_limits<double>::infinity(), far = std::numeric_limits<double>::infinity();
+  double near = -std::numeric_limits<double>::infinity(),
+         far = std::numeric_limits<double>::infinity();
   if (!cloud.has_normals()) {
     for (Eigen::Index i = 0; i < cloud.size(); ++i) {
       const double d = Project(c.view, cloud.points.row(i).transpose()).depth;
@@ -149,13 +169,14 @@ void DrawCloud(const RenderOptions& o, const PointCloud& cloud, const Canvas& c,
   }
 }
 
-void DrawOverlays(const RenderOptions& o, const RenderScene& scene, const Canvas& c, const cv::Mat& depth,
-                  cv::Mat* image) {
+void DrawOverlays(const RenderOptions& o, const RenderScene& scene, const Canvas& c,
+                  const cv::Mat& depth, cv::Mat* image) {
   for (const Polyline& line : scene.polylines) {
     std::vector<cv::Point> pts;
     for (Eigen::Index k = 0; k < line.points.rows(); ++k) {
       const cv::Point2d q = c.Pixel(Project(c.view, line.points.row(k).transpose()));
-      pts.emplace_back(static_cast<int>(std::lround(q.x * 16)), static_cast<int>(std::lround(q.y * 16)));
+      pts.emplace_back(static_cast<int>(std::lround(q.x * 16)),
+                       static_cast<int>(std::lround(q.y * 16)));
     }
     if (pts.size() >= 2) {
       cv::polylines(*image, std::vector<std::vector<cv::Point>>{pts}, line.closed, Bgr(line.color),
@@ -168,7 +189,8 @@ void DrawOverlays(const RenderOptions& o, const RenderScene& scene, const Canvas
     const cv::Point2d q = c.Pixel(p);
     const int x = static_cast<int>(q.x), y = static_cast<int>(q.y);
     bool hidden = false;
-    if (x >= 0 && y >= 0 && x < depth.cols && y < depth.rows) hidden = p.depth < depth.at<float>(y, x) - 8.0;
+    if (x >= 0 && y >= 0 && x < depth.cols && y < depth.rows)
+      hidden = p.depth < depth.at<float>(y, x) - 8.0;
     const cv::Point centre(x, y);
     cv::circle(*image, centre, 4, Bgr(point.color), hidden ? 1 : cv::FILLED, cv::LINE_AA);
     if (o.label_points && !point.label.empty() && !hidden) {
@@ -182,10 +204,13 @@ void DrawOverlays(const RenderOptions& o, const RenderScene& scene, const Canvas
 
 void RenderOptions::Check() const {
   if (views.empty()) throw InputError("render: no views");
-  if (height_px < 64 || height_px > 20000) throw InputError("render: height_px must be in [64, 20000]");
+  if (height_px < 64 || height_px > 20000)
+    throw InputError("render: height_px must be in [64, 20000]");
   if (!(margin_mm >= 0)) throw InputError("render: margin_mm must be >= 0");
-  if (!(point_radius_px >= 0 && point_radius_px < 50)) throw InputError("render: point_radius_px must be in [0, 50)");
-  if (label_font_px < 6 || label_font_px > 200) throw InputError("render: label_font_px must be in [6, 200]");
+  if (!(point_radius_px >= 0 && point_radius_px < 50))
+    throw InputError("render: point_radius_px must be in [0, 50)");
+  if (label_font_px < 6 || label_font_px > 200)
+    throw InputError("render: label_font_px must be in [6, 200]");
 }
 
 RgbImage Render(const RenderOptions& options, const RenderScene& scene) {
@@ -209,7 +234,8 @@ RgbImage Render(const RenderOptions& options, const RenderScene& scene) {
       any = true;
     });
     if (!options.bounds.isEmpty()) {
-      for (int k = 0; k < 8; ++k) grow(options.bounds.corner(static_cast<Eigen::AlignedBox3d::CornerType>(k)));
+      for (int k = 0; k < 8; ++k)
+        grow(options.bounds.corner(static_cast<Eigen::AlignedBox3d::CornerType>(k)));
     }
     if (!any) throw InputError("render: nothing to draw (no mesh, cloud, points or lines)");
     c.min_x -= options.margin_mm;
@@ -246,15 +272,17 @@ RgbImage Render(const RenderOptions& options, const RenderScene& scene) {
   int left = 0;
   for (const Canvas& c : canvases) {
     cv::Mat view = image(cv::Rect(left, 0, c.width(), options.height_px));
-    cv::Mat depth(options.height_px, c.width(), CV_32F, cv::Scalar(-std::numeric_limits<float>::infinity()));
+    cv::Mat depth(options.height_px, c.width(), CV_32F,
+                  cv::Scalar(-std::numeric_limits<float>::infinity()));
     if (scene.mesh) DrawMesh(options, *scene.mesh, c, &view, &depth);
     if (scene.cloud) DrawCloud(options, *scene.cloud, c, radius, &view, &depth);
     DrawOverlays(options, scene, c, depth, &view);
     left += c.width();
   }
   if (!options.title.empty()) {
-    cv::putText(image, options.title, cv::Point(8, options.label_font_px + 10), cv::FONT_HERSHEY_SIMPLEX,
-                options.label_font_px / 16.0, cv::Scalar(40, 40, 40), 1, cv::LINE_AA);
+    cv::putText(image, options.title, cv::Point(8, options.label_font_px + 10),
+                cv::FONT_HERSHEY_SIMPLEX, options.label_font_px / 16.0, cv::Scalar(40, 40, 40), 1,
+                cv::LINE_AA);
   }
   cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
   RgbImage out;
@@ -273,7 +301,9 @@ RgbImage SideBySide(const std::vector<RgbImage>& images, int gap_px, Rgb backgro
   if (images.empty()) return out;
   out.width += gap_px * static_cast<int>(images.size() - 1);
   out.rgb.resize(static_cast<size_t>(out.width) * out.height * 3);
-  for (size_t i = 0; i < out.rgb.size(); i += 3) std::copy(background.begin(), background.end(), out.rgb.begin() + static_cast<std::ptrdiff_t>(i));
+  for (size_t i = 0; i < out.rgb.size(); i += 3)
+    std::copy(background.begin(), background.end(),
+              out.rgb.begin() + static_cast<std::ptrdiff_t>(i));
   int left = 0;
   for (const RgbImage& im : images) {
     for (int y = 0; y < im.height; ++y) {

@@ -37,15 +37,15 @@ using Rgb = std::array<std::uint8_t, 3>;
 enum class View { kFront, kBack, kRight, kLeft, kTop };
 
 struct LabelledPoint {
-  std::string label;          // drawn beside the point; empty = no label
-  Eigen::Vector3d position;   // body frame, mm
+  std::string label;         // drawn beside the point; empty = no label
+  Eigen::Vector3d position;  // body frame, mm
   Rgb color = {220, 30, 30};
 };
 
 struct Polyline {
-  Eigen::MatrixX3d points;    // #K x 3, body frame, mm
+  Eigen::MatrixX3d points;  // #K x 3, body frame, mm
   Rgb color = {20, 90, 220};
-  bool closed = false;        // join the last point to the first (girth loops)
+  bool closed = false;  // join the last point to the first (girth loops)
   double width_px = 2;
 };
 
@@ -58,14 +58,14 @@ struct RenderScene {
 
 struct RenderOptions {
   std::vector<View> views = {View::kFront, View::kRight};  // left to right
-  int height_px = 900;              // picture height (> 64)
-  double margin_mm = 60;            // empty space around the geometry
+  int height_px = 900;                                     // picture height (> 64)
+  double margin_mm = 60;                                   // empty space around the geometry
   Rgb background = {255, 255, 255};
-  Rgb surface = {214, 196, 178};    // mesh colour (and cloud colour)
-  double point_radius_px = 0;       // cloud splat radius; 0 = from the cloud's spacing
+  Rgb surface = {214, 196, 178};  // mesh colour (and cloud colour)
+  double point_radius_px = 0;     // cloud splat radius; 0 = from the cloud's spacing
   bool label_points = true;
-  int label_font_px = 13;           // label text height
-  std::string title;                // drawn at the top left; empty = none
+  int label_font_px = 13;  // label text height
+  std::string title;       // drawn at the top left; empty = none
   // The region to show (body frame, mm); empty (default) = fit the scene.
   // Give the same bounds to several pictures to draw them at one scale
   // (geometry outside is clipped).

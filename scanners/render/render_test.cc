@@ -14,9 +14,11 @@ namespace {
 TriangleMesh Box() {
   TriangleMesh m;
   m.vertices.resize(8, 3);
-  for (int i = 0; i < 8; ++i) m.vertices.row(i) << (i & 1 ? 100 : -100), (i & 2 ? 50 : -50), (i & 4 ? 400 : 0);
+  for (int i = 0; i < 8; ++i)
+    m.vertices.row(i) << (i & 1 ? 100 : -100), (i & 2 ? 50 : -50), (i & 4 ? 400 : 0);
   m.faces.resize(12, 3);
-  m.faces << 0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5;
+  m.faces << 0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4,
+      6, 1, 3, 5, 3, 7, 5;
   return m;
 }
 

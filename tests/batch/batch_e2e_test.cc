@@ -9,8 +9,8 @@
 
 #include "pipeline/batch/done_record.h"
 #include "scanners/core/json_io.h"
-#include "tests/batch/batch_test_util.h"
-#include "tests/batch/corpus.h"
+#include "tests/support/batch_test_util.h"
+#include "tests/support/corpus.h"
 #include "tests/support/test_support.h"
 
 namespace bespoke::testing {
@@ -21,7 +21,9 @@ TEST(BatchE2E, RunWritesEverythingAndDoneJsonLast) {
   TempDir dir;
   WriteSyntheticBodyScan({60000, 1700, 1.0, 1.0, 30, 7}, dir / "person.ply");
   ASSERT_EQ(RunBespoke({"run", (dir / "person.ply").string(), "-o", (dir / "out").string()},
-                       dir / "log.txt"), 0) << ReadText(dir / "log.txt");
+                       dir / "log.txt"),
+            0)
+      << ReadText(dir / "log.txt");
   std::string problem;
   const auto record = ReadValidDoneRecord(dir / "out", /*verify_hashes=*/true, &problem);
   ASSERT_TRUE(record) << problem;
@@ -31,7 +33,8 @@ TEST(BatchE2E, RunWritesEverythingAndDoneJsonLast) {
   EXPECT_EQ(record->results.value("file_unit", ""), "m");
   EXPECT_FALSE(record->outputs.empty());
   // The measure step ran: the document, its exports and the render.
-  for (const char* f : {"measurements.json", "measurements.csv", "measurements.vit", "freesewing.json", "render.png"})
+  for (const char* f : {"measurements.json", "measurements.csv", "measurements.vit",
+                        "freesewing.json", "render.png"})
     EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
   const nlohmann::json doc = ReadJsonFile(dir / "out" / "measurements.json");
   EXPECT_EQ(doc["format"], "bespoke-measurements");
@@ -46,7 +49,8 @@ TEST(BatchE2E, RunWritesEverythingAndDoneJsonLast) {
   // A failing scan leaves a done.json that says so, and exit code 1.
   WriteText(dir / "bad.ply", "ply\nformat ascii 1.0\nelement vertex 9\nend_header\n");
   EXPECT_EQ(RunBespoke({"run", (dir / "bad.ply").string(), "-o", (dir / "out").string()},
-                       dir / "log2.txt"), 1);
+                       dir / "log2.txt"),
+            1);
   const auto failed = ReadValidDoneRecord(dir / "out", true, &problem);
   ASSERT_TRUE(failed) << problem;
   EXPECT_EQ(failed->status, "failed");
@@ -59,13 +63,14 @@ TEST(BatchE2E, GoodScansMeasuredHostileFilesListedWithReasons) {
   const int good = 8;
   fs::create_directories(dir / "in");
   for (int k = 0; k < good; ++k) {
-    WriteSyntheticBodyScan({60000, 1600.0 + 25 * k, 0.9 + 0.03 * k, 1.0, 40.0 * k,
-                            static_cast<std::uint32_t>(k + 1)},
-                           dir / "in" / ("good_" + std::to_string(k) + ".ply"));
+    WriteSyntheticBodyScan(
+        {60000, 1600.0 + 25 * k, 0.9 + 0.03 * k, 1.0, 40.0 * k, static_cast<std::uint32_t>(k + 1)},
+        dir / "in" / ("good_" + std::to_string(k) + ".ply"));
   }
   const std::vector<std::string> hostile = WriteHostileFiles(dir / "in", 3);
   const int code = RunBespoke({"batch", (dir / "in").string(), "-o", (dir / "out").string(), "-j",
-                               "2", "--timeout-s", "120"}, dir / "log.txt");
+                               "2", "--timeout-s", "120"},
+                              dir / "log.txt");
   EXPECT_EQ(code, 1) << ReadText(dir / "log.txt");  // bad input only: no crash, no time-out
   const std::vector<std::string> rows = CsvRows(ReadText(dir / "out" / "summary.csv"));
   EXPECT_EQ(rows.size(), good + hostile.size());
@@ -73,7 +78,8 @@ TEST(BatchE2E, GoodScansMeasuredHostileFilesListedWithReasons) {
   for (const std::string& r : rows) ok += r.find(",ok,") != std::string::npos ? 1 : 0;
   EXPECT_EQ(ok, good) << ReadText(dir / "out" / "summary.csv");
   // summary.csv carries the measurements' columns.
-  const std::string header = ReadText(dir / "out" / "summary.csv").substr(0, ReadText(dir / "out" / "summary.csv").find('\n'));
+  const std::string header = ReadText(dir / "out" / "summary.csv")
+                                 .substr(0, ReadText(dir / "out" / "summary.csv").find('\n'));
   for (const char* column : {"stature_mm", "waist_girth_mm", "hip_girth_mm", "flagged"})
     EXPECT_NE(header.find(column), std::string::npos) << header;
   const std::vector<std::string> failures = CsvRows(ReadText(dir / "out" / "failures.csv"));
@@ -86,8 +92,10 @@ TEST(BatchE2E, GoodScansMeasuredHostileFilesListedWithReasons) {
   // A resume has nothing left to do and reproduces the same tables.
   const std::string summary = ReadText(dir / "out" / "summary.csv");
   EXPECT_EQ(RunBespoke({"batch", (dir / "in").string(), "-o", (dir / "out").string(), "--resume"},
-                       dir / "log2.txt"), 1);
-  EXPECT_NE(ReadText(dir / "log2.txt").find("0 to run"), std::string::npos) << ReadText(dir / "log2.txt");
+                       dir / "log2.txt"),
+            1);
+  EXPECT_NE(ReadText(dir / "log2.txt").find("0 to run"), std::string::npos)
+      << ReadText(dir / "log2.txt");
   EXPECT_EQ(ReadText(dir / "out" / "summary.csv"), summary);
 }
 
@@ -102,7 +110,9 @@ TEST(BatchE2E, DesignFitsAPatternToEveryScan) {
   WriteSyntheticBodyScan({100000, 1620, 0.92, 1.0, 0, 11}, dir / "in" / "small.ply");
   WriteSyntheticBodyScan({100000, 1840, 1.10, 1.0, 120, 12}, dir / "in" / "large.ply");
   ASSERT_EQ(RunBespoke({"batch", (dir / "in").string(), "-o", (dir / "out").string(), "-j", "2",
-                        "--design", "shirt", "--timeout-s", "300"}, dir / "log.txt"), 0)
+                        "--design", "shirt", "--timeout-s", "300"},
+                       dir / "log.txt"),
+            0)
       << ReadText(dir / "log.txt");
   std::map<std::string, double> achieved_sum_mm;
   for (const char* id : {"small", "large"}) {
@@ -127,7 +137,8 @@ TEST(BatchE2E, DesignFitsAPatternToEveryScan) {
       for (const nlohmann::json& m : doc["measurements"])
         if (m.value("name", "") == name) scan_mm = m.value("value_mm", -1.0);
       EXPECT_NEAR(b.value("body_mm", 0.0), scan_mm, 1e-6) << id << ": " << name;
-      EXPECT_NEAR(b.value("achieved_mm", 0.0), b.value("target_mm", 0.0), 1.0) << id << ": " << name;
+      EXPECT_NEAR(b.value("achieved_mm", 0.0), b.value("target_mm", 0.0), 1.0)
+          << id << ": " << name;
       achieved_sum_mm[id] += b.value("achieved_mm", 0.0);
     }
   }

@@ -12,7 +12,7 @@
 
 #include "pipeline/batch/process.h"
 #include "scanners/core/json_io.h"
-#include "tests/batch/batch_test_util.h"
+#include "tests/support/batch_test_util.h"
 #include "tests/support/test_support.h"
 
 namespace bespoke::testing {
@@ -21,8 +21,8 @@ namespace fs = std::filesystem;
 
 std::vector<std::string> BatchArgs(const fs::path& in, const fs::path& out,
                                    std::vector<std::string> extra = {}) {
-  std::vector<std::string> args = {"batch", in.string(), "-o", out.string(),
-                                   "--worker", FakeWorkerBinary().string()};
+  std::vector<std::string> args = {"batch",      in.string(), "-o",
+                                   out.string(), "--worker",  FakeWorkerBinary().string()};
   args.insert(args.end(), extra.begin(), extra.end());
   return args;
 }
@@ -33,7 +33,8 @@ void WriteOkScans(const fs::path& dir, int n, double delay_s) {
   for (int i = 0; i < n; ++i) {
     char name[16];
     std::snprintf(name, sizeof name, "s%02d.txt", i);
-    WriteText(dir / name, "sleep " + std::to_string(delay_s) + " ok " + std::to_string(1500 + 10 * i));
+    WriteText(dir / name,
+              "sleep " + std::to_string(delay_s) + " ok " + std::to_string(1500 + 10 * i));
   }
 }
 
@@ -63,9 +64,9 @@ TEST(BatchFake, OneBadScanNeverStopsTheOthers) {
   const bool limit = !BuiltWithAddressSanitizer();  // ASan cannot run under RLIMIT_AS
   if (limit) WriteText(dir / "in" / "oom.txt", "oom");
   fs::create_directories(dir / "in" / "folder.txt");  // not a file: fake_worker cannot open it
-  const int code = RunBespoke(BatchArgs(dir / "in", dir / "out",
-                                        {"-j", "2", "--timeout-s", "3", "--memory-mb", "256"}),
-                              dir / "log.txt");
+  const int code = RunBespoke(
+      BatchArgs(dir / "in", dir / "out", {"-j", "2", "--timeout-s", "3", "--memory-mb", "256"}),
+      dir / "log.txt");
   const std::string log = ReadText(dir / "log.txt");
   EXPECT_EQ(code, 2) << log;  // crashes and time-outs are not bad input
   const std::string summary = ReadText(dir / "out" / "summary.csv");
@@ -79,7 +80,7 @@ TEST(BatchFake, OneBadScanNeverStopsTheOthers) {
   EXPECT_NE(failures.find("crash,"), std::string::npos);
   EXPECT_NE(failures.find("SIGSEGV"), std::string::npos) << failures;
   EXPECT_NE(failures.find("SIGABRT"), std::string::npos) << failures;
-  EXPECT_NE(failures.find("hang,") , std::string::npos);
+  EXPECT_NE(failures.find("hang,"), std::string::npos);
   EXPECT_NE(failures.find("timed out after 3 s"), std::string::npos) << failures;
   if (limit) {
     EXPECT_NE(failures.find("oom,"), std::string::npos);
@@ -120,7 +121,8 @@ TEST(BatchFake, ResumeAfterKillNineEqualsUninterruptedRun) {
   WriteText(dir / "in" / "zz_bad.txt", "input-error cannot parse");
   ASSERT_EQ(RunBespoke(BatchArgs(dir / "in", dir / "reference", {"-j", "2"}), dir / "ref.txt"), 1);
 
-  const pid_t batch = StartBespoke(BatchArgs(dir / "in", dir / "out", {"-j", "2"}), dir / "run1.txt");
+  const pid_t batch =
+      StartBespoke(BatchArgs(dir / "in", dir / "out", {"-j", "2"}), dir / "run1.txt");
   ASSERT_TRUE(WaitFor([&] { return CountDone(dir / "out") >= 4; }, 30));
   ::kill(batch, SIGKILL);
   ReapWorker(batch);
@@ -140,8 +142,8 @@ TEST(BatchFake, ResumeAfterKillNineEqualsUninterruptedRun) {
   WriteText(dir / "out" / "s11" / "measurements.json", "{\"torn");
   WriteText(dir / "out" / "s01" / "measurements.json", "{}");
 
-  const int code = RunBespoke(BatchArgs(dir / "in", dir / "out", {"-j", "2", "--resume"}),
-                              dir / "run2.txt");
+  const int code =
+      RunBespoke(BatchArgs(dir / "in", dir / "out", {"-j", "2", "--resume"}), dir / "run2.txt");
   ASSERT_EQ(code, 1) << ReadText(dir / "run2.txt");
   EXPECT_NE(ReadText(dir / "run2.txt").find("s01: redoing (measurements.json:"), std::string::npos)
       << ReadText(dir / "run2.txt");
@@ -159,7 +161,8 @@ TEST(BatchFake, ResumeAfterKillNineEqualsUninterruptedRun) {
 TEST(BatchFake, CtrlCStopsCleanlyAndResumeFinishes) {
   TempDir dir;
   WriteOkScans(dir / "in", 8, 0.4);
-  const pid_t batch = StartBespoke(BatchArgs(dir / "in", dir / "out", {"-j", "2"}), dir / "run1.txt");
+  const pid_t batch =
+      StartBespoke(BatchArgs(dir / "in", dir / "out", {"-j", "2"}), dir / "run1.txt");
   ASSERT_TRUE(WaitFor([&] { return CountDone(dir / "out") >= 2; }, 30));
   ::kill(batch, SIGINT);
   const WorkerExit exit = ReapWorker(batch);
@@ -181,17 +184,25 @@ TEST(BatchFake, ShardsMergeIntoTheLocalRunsSummary) {
   // Shards 1 and 3 share one folder, shard 2 has its own (another machine).
   for (const std::string shard : {"1/3", "3/3"}) {
     ASSERT_EQ(RunBespoke(BatchArgs(dir / "in", dir / "shared", {"--resume", "--shard", shard}),
-                         dir / "s.txt"), shard == "1/3" ? 1 : 0) << ReadText(dir / "s.txt");
+                         dir / "s.txt"),
+              shard == "1/3" ? 1 : 0)
+        << ReadText(dir / "s.txt");
   }
   // Missing shard 2: the merge refuses, or marks it incomplete.
   EXPECT_EQ(RunBespoke({"batch-merge", (dir / "shared").string()}, dir / "m1.txt"), 1);
   EXPECT_NE(ReadText(dir / "m1.txt").find("2/3"), std::string::npos) << ReadText(dir / "m1.txt");
   EXPECT_EQ(RunBespoke({"batch-merge", (dir / "shared").string(), "--allow-incomplete", "-o",
-                        (dir / "partial").string()}, dir / "m2.txt"), 2);
+                        (dir / "partial").string()},
+                       dir / "m2.txt"),
+            2);
   // Sorted ids: bad s00 .. s06; shard 1/3 = bad s02 s05, 2/3 = s00 s03 s06, 3/3 = s01 s04.
-  ASSERT_EQ(RunBespoke(BatchArgs(dir / "in", dir / "other", {"--shard", "2/3"}), dir / "s2.txt"), 0);
+  ASSERT_EQ(RunBespoke(BatchArgs(dir / "in", dir / "other", {"--shard", "2/3"}), dir / "s2.txt"),
+            0);
   ASSERT_EQ(RunBespoke({"batch-merge", (dir / "shared").string(), (dir / "other").string(), "-o",
-                        (dir / "merged").string()}, dir / "m3.txt"), 1) << ReadText(dir / "m3.txt");
+                        (dir / "merged").string()},
+                       dir / "m3.txt"),
+            1)
+      << ReadText(dir / "m3.txt");
   EXPECT_EQ(ReadText(dir / "merged" / "summary.csv"), ReadText(dir / "local" / "summary.csv"));
   EXPECT_EQ(ReadText(dir / "merged" / "failures.csv"), ReadText(dir / "local" / "failures.csv"));
   EXPECT_NE(ReadText(dir / "merged" / "report.html").find("3 attempt(s)"), std::string::npos);

@@ -12,7 +12,7 @@
 #include "pipeline/batch/scan_list.h"
 #include "pipeline/batch/scan_worker.h"
 #include "scanners/core/errors.h"
-#include "tests/batch/batch_test_util.h"
+#include "tests/support/batch_test_util.h"
 #include "tests/support/test_support.h"
 
 namespace bespoke {
@@ -83,7 +83,8 @@ TEST(ScanList, ShardsPartitionTheSortedListEvenly) {
     std::set<std::string> seen;
     size_t smallest = all.size(), largest = 0;
     for (int i = 1; i <= n; ++i) {
-      const std::vector<ScanEntry> part = SelectShard(all, ParseShard(std::to_string(i) + "/" + std::to_string(n)));
+      const std::vector<ScanEntry> part =
+          SelectShard(all, ParseShard(std::to_string(i) + "/" + std::to_string(n)));
       smallest = std::min(smallest, part.size());
       largest = std::max(largest, part.size());
       for (const ScanEntry& e : part) EXPECT_TRUE(seen.insert(e.id).second) << e.id << " twice";
@@ -133,9 +134,10 @@ ScanOutcome Outcome(const std::string& id, const std::string& status, double sta
   o.record->time_s = stature / 1000;  // varies: must not reach summary.csv
   if (status == "ok") {
     o.record->results = {{"points_cleaned", 1000}, {"file_unit", "m"}};
-    o.measurements = {{"measurements",
-                       {{{"name", "stature"}, {"value_mm", stature}, {"flags", nlohmann::json::array()}},
-                        {{"name", "waist_girth"}, {"value_mm", 801.234}, {"flags", {"open"}}}}}};
+    o.measurements = {
+        {"measurements",
+         {{{"name", "stature"}, {"value_mm", stature}, {"flags", nlohmann::json::array()}},
+          {{"name", "waist_girth"}, {"value_mm", 801.234}, {"flags", {"open"}}}}}};
   } else {
     o.record->failure = ScanFailure{"input_error", "bad, \"really\"", 1, 0, ""};
   }
@@ -145,13 +147,15 @@ ScanOutcome Outcome(const std::string& id, const std::string& status, double sta
 TEST(BatchSummary, RowsColumnsAndQuotingAreFixed) {
   std::vector<ScanOutcome> outcomes = {Outcome("a", "ok", 1750.0), Outcome("b", "failed", 0),
                                        Outcome("c", "ok", 1600.5)};
-  outcomes.push_back(ScanOutcome{{"d", "/in/d.ply", "", "", {}}, "/out/d", std::nullopt, "no done.json", {}});
-  EXPECT_EQ(SummaryCsv(outcomes),
-            "scan_id,status,failure_kind,file_unit,points_cleaned,stature_mm,waist_girth_mm,flagged\n"
-            "a,ok,,m,1000,1750.00,801.23,waist_girth\n"
-            "b,failed,input_error,,,,,\n"
-            "c,ok,,m,1000,1600.50,801.23,waist_girth\n"
-            "d,failed,not_processed,,,,,\n");
+  outcomes.push_back(
+      ScanOutcome{{"d", "/in/d.ply", "", "", {}}, "/out/d", std::nullopt, "no done.json", {}});
+  EXPECT_EQ(
+      SummaryCsv(outcomes),
+      "scan_id,status,failure_kind,file_unit,points_cleaned,stature_mm,waist_girth_mm,flagged\n"
+      "a,ok,,m,1000,1750.00,801.23,waist_girth\n"
+      "b,failed,input_error,,,,,\n"
+      "c,ok,,m,1000,1600.50,801.23,waist_girth\n"
+      "d,failed,not_processed,,,,,\n");
   EXPECT_EQ(FailuresCsv(outcomes),
             "scan_id,input,kind,exit_code,signal,message\n"
             "b,/in/b.ply,input_error,1,,\"bad, \"\"really\"\"\"\n"

@@ -38,10 +38,15 @@ int Run(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "run") continue;
-    if (a == "-o" && i + 1 < argc) out = argv[++i];
-    else if (a == "--scan-id" && i + 1 < argc) id = argv[++i];
-    else if ((a == "--design" || a == "--units" || a == "--landmarks" || a == "--threads") && i + 1 < argc) ++i;
-    else if (scan.empty()) scan = a;
+    if (a == "-o" && i + 1 < argc)
+      out = argv[++i];
+    else if (a == "--scan-id" && i + 1 < argc)
+      id = argv[++i];
+    else if ((a == "--design" || a == "--units" || a == "--landmarks" || a == "--threads") &&
+             i + 1 < argc)
+      ++i;
+    else if (scan.empty())
+      scan = a;
   }
   if (scan.empty() || out.empty()) {
     std::cerr << "error: fake_worker: usage: run SCAN -o DIR\n";
@@ -69,12 +74,18 @@ int Run(int argc, char** argv) {
     } else if (word == "ok") {
       double v = 0;
       in >> v;
-      const json doc = {{"format", "bespoke-measurements"}, {"version", 1}, {"units", "mm"},
-                        {"frame", "body"}, {"landmarks", json::object()},
-                        {"measurements",
-                         {{{"name", "stature"}, {"kind", "height"}, {"value_mm", v}, {"flags", json::array()}},
-                          {{"name", "waist_girth"}, {"kind", "girth"}, {"value_mm", v / 2},
-                           {"flags", v > 1900 ? json::array({"section_open"}) : json::array()}}}}};
+      const json doc = {
+          {"format", "bespoke-measurements"},
+          {"version", 1},
+          {"units", "mm"},
+          {"frame", "body"},
+          {"landmarks", json::object()},
+          {"measurements",
+           {{{"name", "stature"}, {"kind", "height"}, {"value_mm", v}, {"flags", json::array()}},
+            {{"name", "waist_girth"},
+             {"kind", "girth"},
+             {"value_mm", v / 2},
+             {"flags", v > 1900 ? json::array({"section_open"}) : json::array()}}}}};
       bespoke::WriteJsonFile(fs::path(out) / "measurements.json", doc);
       record.outputs.push_back(bespoke::DescribeOutput(out, "measurements.json"));
       record.results["points_cleaned"] = static_cast<std::int64_t>(v * 10);

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "scanners/core/atomic_file.h"
-#include "tests/batch/corpus.h"
+#include "tests/support/corpus.h"
 
 int main(int argc, char** argv) {
   if (argc < 2) {
@@ -22,10 +22,14 @@ int main(int argc, char** argv) {
   bool hostile = false;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--good" && i + 1 < argc) good = std::atoi(argv[++i]);
-    else if (a == "--points" && i + 1 < argc) points = std::atoi(argv[++i]);
-    else if (a == "--seed" && i + 1 < argc) seed = static_cast<unsigned>(std::atoi(argv[++i]));
-    else if (a == "--hostile") hostile = true;
+    if (a == "--good" && i + 1 < argc)
+      good = std::atoi(argv[++i]);
+    else if (a == "--points" && i + 1 < argc)
+      points = std::atoi(argv[++i]);
+    else if (a == "--seed" && i + 1 < argc)
+      seed = static_cast<unsigned>(std::atoi(argv[++i]));
+    else if (a == "--hostile")
+      hostile = true;
     else {
       std::cerr << "batch_corpus: unknown argument " << a << "\n";
       return 1;

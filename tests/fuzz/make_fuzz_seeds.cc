@@ -84,7 +84,8 @@ int main(int argc, char** argv) {
     bespoke::WriteMesh(w, mesh, out / "obj" / "mesh.obj");
     Text(out / "obj" / "groups.obj",
          "mtllib m.mtl\no thing\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0 1 0.5 0\nvt 0 0\nvt 1 1\n"
-         "vn 0 0 1\ng body\nusemtl skin\ns off\nf 1/1/1 2/2/1 3/1/1 4/2/1\ng arm\nf -4//1 -3//1 -1//1\n"
+         "vn 0 0 1\ng body\nusemtl skin\ns off\nf 1/1/1 2/2/1 3/1/1 4/2/1\ng arm\nf -4//1 -3//1 "
+         "-1//1\n"
          "f 2/1 3/2 4/1\n");
     bespoke::WriteScan(w, cloud, out / "xyz" / "cloud.xyz");
     bespoke::WriteScan(w, cloud, out / "xyz" / "cloud.csv");
@@ -92,10 +93,12 @@ int main(int argc, char** argv) {
     Text(out / "xyz" / "normals.txt", "# x y z nx ny nz\n1 2 3 0 0 1\n4 5 6 0 1 0\n");
     Text(out / "xyz" / "count.pts", "2\n1 2 3 10 255 0 0\n4 5 6 20 0 255 0\n");
     bespoke::WriteMesh(w, mesh, out / "off" / "mesh.off");
-    Text(out / "off" / "coff.off", "COFF 3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 1.0 0 1\n0 1 0 0 0 9 9\n"
-                                   "3 0 1 2 1 1 1\n");
-    Text(out / "off" / "noff.off", "NOFF\n# normals\n3 1\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n"
-                                   "3 0 1 2\n");
+    Text(out / "off" / "coff.off",
+         "COFF 3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 1.0 0 1\n0 1 0 0 0 9 9\n"
+         "3 0 1 2 1 1 1\n");
+    Text(out / "off" / "noff.off",
+         "NOFF\n# normals\n3 1\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n"
+         "3 0 1 2\n");
     bespoke::WriteMesh(w, mesh, out / "stl" / "mesh.stl");
     Text(out / "stl" / "ascii.stl",
          "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\n"

@@ -14,9 +14,13 @@ nlohmann::json ScaledDraftMeasurements(const std::filesystem::path& draft_json, 
   for (const auto& b : draft.at("bindings")) {
     const std::string name = b.at("measurement");
     if (!seen.insert(name).second) continue;
-    measurements.push_back({{"name", name}, {"value_mm", scale * b.at("body_mm").get<double>()}, {"flags", {}}});
+    measurements.push_back(
+        {{"name", name}, {"value_mm", scale * b.at("body_mm").get<double>()}, {"flags", {}}});
   }
-  return {{"format", "bespoke-measurements"}, {"version", 1}, {"units", "mm"}, {"measurements", measurements}};
+  return {{"format", "bespoke-measurements"},
+          {"version", 1},
+          {"units", "mm"},
+          {"measurements", measurements}};
 }
 
 }  // namespace bespoke::testing

@@ -7,7 +7,6 @@
 #define BESPOKE_TESTS_SUPPORT_DRAFT_MEASUREMENTS_H_
 
 #include <filesystem>
-
 #include <nlohmann/json.hpp>
 
 namespace bespoke::testing {

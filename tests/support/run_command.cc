@@ -27,7 +27,8 @@ std::string ReadText(const std::filesystem::path& file) {
   return text.str();
 }
 
-CommandResult RunCommand(const std::string& command_line, const std::filesystem::path& scratch_dir) {
+CommandResult RunCommand(const std::string& command_line,
+                         const std::filesystem::path& scratch_dir) {
   const std::filesystem::path out = scratch_dir / "command-stdout.txt";
   const std::filesystem::path err = scratch_dir / "command-stderr.txt";
   const std::string command = command_line + " > " + Quote(out) + " 2> " + Quote(err);

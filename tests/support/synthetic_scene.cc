@@ -11,7 +11,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 using Rng = std::mt19937_64;
 
-double Uniform(Rng& rng, double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
+double Uniform(Rng& rng, double a, double b) {
+  return std::uniform_real_distribution<double>(a, b)(rng);
+}
 
 Eigen::Vector3d RandomDirection(Rng& rng) {
   std::normal_distribution<double> g;
@@ -62,7 +64,8 @@ class Ellipsoid : public Shape {
  public:
   Ellipsoid(Eigen::Vector3d c, Eigen::Vector3d radii) : c_(c), r_(radii) {}
   double Area() const override {  // Knud Thomsen's approximation, < 1.1 % error
-    const double p = 1.6075, a = std::pow(r_.x(), p), b = std::pow(r_.y(), p), c = std::pow(r_.z(), p);
+    const double p = 1.6075, a = std::pow(r_.x(), p), b = std::pow(r_.y(), p),
+                 c = std::pow(r_.z(), p);
     return 4 * kPi * std::pow((a * b + a * c + b * c) / 3, 1 / p);
   }
   void Sample(Rng& rng, Eigen::Vector3d* p, Eigen::Vector3d* n) const override {
@@ -156,8 +159,8 @@ std::vector<std::unique_ptr<Shape>> MakePerson(const SyntheticSceneOptions& o, d
   s.push_back(std::make_unique<Capsule>(Eigen::Vector3d(0, shin_y, 1500),
                                         Eigen::Vector3d(0, shin_y, 1580), 55));
   const double head_y = shin_y + (o.head_forward ? 25 : 0);
-  s.push_back(std::make_unique<Ellipsoid>(Eigen::Vector3d(0, head_y, 1650),
-                                          Eigen::Vector3d(78, 98, 100)));
+  s.push_back(
+      std::make_unique<Ellipsoid>(Eigen::Vector3d(0, head_y, 1650), Eigen::Vector3d(78, 98, 100)));
   if (o.head_forward) {
     s.push_back(std::make_unique<Ellipsoid>(Eigen::Vector3d(0, head_y + 95, 1630),
                                             Eigen::Vector3d(15, 22, 25)));
@@ -173,7 +176,8 @@ void SampleUnion(const std::vector<std::unique_ptr<Shape>>& shapes, double spaci
       Sample s{{}, {}, ScenePart::kBody};
       shapes[i]->Sample(rng, &s.p, &s.n);
       bool covered = false;
-      for (size_t j = 0; j < shapes.size() && !covered; ++j) covered = j != i && shapes[j]->Inside(s.p, 0.0);
+      for (size_t j = 0; j < shapes.size() && !covered; ++j)
+        covered = j != i && shapes[j]->Inside(s.p, 0.0);
       if (!covered) out->push_back(s);
     }
   }
@@ -203,7 +207,8 @@ SyntheticScene MakeSyntheticScene(const SyntheticSceneOptions& o) {
   SampleUnion(person, o.spacing_mm, rng, &samples);
 
   const double object_x = scene.right_hand_max_x_mm + o.object_gap_mm;
-  const Box object(Eigen::Vector3d(object_x, -100, 0), Eigen::Vector3d(object_x + 200, 100, 1100), true);
+  const Box object(Eigen::Vector3d(object_x, -100, 0), Eigen::Vector3d(object_x + 200, 100, 1100),
+                   true);
   if (o.second_object) {
     const auto count = static_cast<std::int64_t>(object.Area() / (o.spacing_mm * o.spacing_mm));
     for (std::int64_t k = 0; k < count; ++k) {
@@ -214,7 +219,8 @@ SyntheticScene MakeSyntheticScene(const SyntheticSceneOptions& o) {
   }
   const double f = o.floor_half_size_mm;
   auto under_something = [&](const Eigen::Vector3d& p) {
-    const bool under_foot = std::abs(std::abs(p.x()) - 100) <= 50 && std::abs(p.y() - FootCentreY(o)) <= 125;
+    const bool under_foot =
+        std::abs(std::abs(p.x()) - 100) <= 50 && std::abs(p.y() - FootCentreY(o)) <= 125;
     return under_foot || (o.second_object && object.Inside(p + Eigen::Vector3d(0, 0, 1), 0.0));
   };
   if (o.floor) {
@@ -281,7 +287,8 @@ Eigen::Isometry3d RandomRigid(unsigned seed, double max_translation_mm) {
   q.normalize();
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   t.linear() = q.toRotationMatrix();
-  for (int c = 0; c < 3; ++c) t.translation()(c) = Uniform(rng, -max_translation_mm, max_translation_mm);
+  for (int c = 0; c < 3; ++c)
+    t.translation()(c) = Uniform(rng, -max_translation_mm, max_translation_mm);
   return t;
 }
 

@@ -3,7 +3,7 @@
 // scanner pose in a known unit.
 //
 // The person (body frame, docs/contracts.md: mm, +z up, soles on z = 0,
-// facing +y, right at +x, origin between the ankles as in scanners/body),
+// facing +y, right at +x, origin between the ankles as in oracle/body),
 // 1750 mm tall, A-pose:
 //   legs    capsules (shin r 48, thigh r 72) on axes at x = +-100, y = 0
 //   feet    boxes 100 x 250 x 70 mm centred at x = +-100 under the legs,
@@ -22,13 +22,12 @@
 // along it by Gaussian noise.
 // The rest: a square floor patch at z = 0 (not under the feet or the
 // object), a box 200 x 200 x 1100 mm (a pole, a coat stand) whose nearest
-// face is `object_gap_mm` to the right of the right hand, isolated stray points and clumps of 3 stray points
-// at least 40 mm from every surface, within the surfaces' bounding box grown
-// by 50 mm (some below the floor). Note the whole scene's extent decides
-// whether a reader can guess the unit (GuessLengthUnit accepts 0.5-2.6 m):
-// a small floor and no object keep any rotation of it under 2.6 m.
-// Finally every point and normal is mapped by `scanner_from_body` and the
-// points are divided by `mm_per_unit` (1000 writes metres).
+// face is `object_gap_mm` to the right of the right hand, isolated stray points and clumps of 3
+// stray points at least 40 mm from every surface, within the surfaces' bounding box grown by 50 mm
+// (some below the floor). Note the whole scene's extent decides whether a reader can guess the unit
+// (GuessLengthUnit accepts 0.5-2.6 m): a small floor and no object keep any rotation of it
+// under 2.6 m. Finally every point and normal is mapped by `scanner_from_body` and the points are
+// divided by `mm_per_unit` (1000 writes metres).
 #ifndef BESPOKE_TESTS_SUPPORT_SYNTHETIC_SCENE_H_
 #define BESPOKE_TESTS_SUPPORT_SYNTHETIC_SCENE_H_
 
@@ -44,8 +43,8 @@ enum class ScenePart : std::uint8_t { kBody, kFloor, kObject, kOutlier };
 
 struct SyntheticSceneOptions {
   unsigned seed = 1;
-  double spacing_mm = 4.0;   // mean distance between samples on a surface
-  double noise_mm = 1.0;     // sigma of the noise along the normal
+  double spacing_mm = 4.0;  // mean distance between samples on a surface
+  double noise_mm = 1.0;    // sigma of the noise along the normal
   bool floor = true;
   double floor_half_size_mm = 800.0;  // the floor is a square of twice this side
   bool second_object = true;
@@ -60,9 +59,9 @@ struct SyntheticSceneOptions {
 };
 
 struct SyntheticScene {
-  PointCloud cloud;                  // scanner frame, file units, no normals
-  Eigen::MatrixX3d true_normals;     // #P x 3, scanner frame; floor +up, outliers 0
-  std::vector<ScenePart> part;       // #P
+  PointCloud cloud;               // scanner frame, file units, no normals
+  Eigen::MatrixX3d true_normals;  // #P x 3, scanner frame; floor +up, outliers 0
+  std::vector<ScenePart> part;    // #P
   Eigen::Isometry3d scanner_from_body = Eigen::Isometry3d::Identity();
   double mm_per_unit = 1.0;
   double height_mm = 1750.0;

@@ -33,9 +33,9 @@ class TempDir {
 
 }  // namespace bespoke::testing
 
-#define BESPOKE_REQUIRE_SHARED(dir_var)                                               \
-  const auto dir_var##_optional = ::bespoke::testing::SharedDir();                    \
-  if (!dir_var##_optional)                                                            \
+#define BESPOKE_REQUIRE_SHARED(dir_var)                                              \
+  const auto dir_var##_optional = ::bespoke::testing::SharedDir();                   \
+  if (!dir_var##_optional)                                                           \
     GTEST_SKIP() << "needs ../shared (set BESPOKE_SHARED_DIR); not found, skipping"; \
   const std::filesystem::path dir_var = *dir_var##_optional
 

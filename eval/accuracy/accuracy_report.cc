@@ -1,0 +1,157 @@
+#include "eval/accuracy/accuracy_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "scanners/core/atomic_file.h"
+#include "scanners/core/json_io.h"
+
+namespace bespoke {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// A CSV cell: quoted when it holds a comma, quote or newline.
+std::string Cell(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::string Join(const std::vector<std::string>& items, const char* separator) {
+  std::string out;
+  for (const std::string& item : items) out += (out.empty() ? "" : separator) + item;
+  return out;
+}
+
+json NumberOrNull(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+void WriteMeasurementsCsv(const AccuracyReport& report, const fs::path& file) {
+  std::ostringstream out;
+  out << "subject,measurement,kind,truth_mm,measured_mm,difference_mm,missing,flags,truth_flags\n";
+  for (const SubjectComparison& s : report.subjects) {
+    for (const MeasurementDifference& d : s.measurements) {
+      out << Cell(s.subject) << ',' << Cell(d.name) << ',' << d.kind << ','
+          << FormatNumber(d.truth_mm) << ',' << FormatNumber(d.measured_mm) << ','
+          << FormatNumber(d.difference_mm) << ',' << (d.missing ? 1 : 0) << ','
+          << Cell(Join(d.flags, ";")) << ',' << Cell(Join(d.truth_flags, ";")) << '\n';
+    }
+  }
+  WriteFileAtomically(file, out.str());
+}
+
+void WriteSummaryCsv(const AccuracyReport& report, const fs::path& file) {
+  std::ostringstream out;
+  out << "measurement,kind,iso_class,tolerance_mm,n,missing,flagged,truth_flagged,bias_mm,sd_mm,"
+         "ci_low_mm,ci_high_mm,mae_mm,max_abs_mm,median_abs_mm,verdict\n";
+  for (const MeasurementSummary& m : report.summary.measurements) {
+    const ErrorStats& s = m.stats;
+    out << Cell(m.name) << ',' << m.kind << ',' << ToString(m.iso_class) << ','
+        << FormatNumber(m.tolerance_mm, 0) << ',' << s.n << ',' << m.missing << ',' << m.flagged
+        << ',' << m.truth_flagged << ',' << FormatNumber(s.mean_mm, 3) << ','
+        << FormatNumber(s.sd_mm, 3) << ',' << FormatNumber(s.ci_low_mm, 3) << ','
+        << FormatNumber(s.ci_high_mm, 3) << ',' << FormatNumber(s.mae_mm, 3) << ','
+        << FormatNumber(s.max_abs_mm, 3) << ',' << FormatNumber(s.median_abs_mm, 3) << ','
+        << ToString(m.verdict) << '\n';
+  }
+  WriteFileAtomically(file, out.str());
+}
+
+void WriteLandmarkCsvs(const AccuracyReport& report, const fs::path& dir) {
+  std::ostringstream summary;
+  summary << "landmark,n,missing,median_mm,mean_mm,max_mm\n";
+  for (const LandmarkSummary& l : report.summary.landmarks) {
+    summary << Cell(l.name) << ',' << l.n << ',' << l.missing << ',' << FormatNumber(l.median_mm)
+            << ',' << FormatNumber(l.mean_mm) << ',' << FormatNumber(l.max_mm) << '\n';
+  }
+  WriteFileAtomically(dir / "landmarks.csv", summary.str());
+  std::ostringstream each;
+  each << "subject,landmark,frame,error_mm,missing,truth_x_mm,truth_y_mm,truth_z_mm,"
+          "measured_x_mm,measured_y_mm,measured_z_mm\n";
+  for (const SubjectComparison& s : report.subjects) {
+    for (const LandmarkError& e : s.landmarks) {
+      each << Cell(s.subject) << ',' << Cell(e.name) << ',' << s.landmark_frame << ','
+           << FormatNumber(e.error_mm) << ',' << (e.missing ? 1 : 0);
+      for (int k = 0; k < 3; ++k) each << ',' << FormatNumber(e.truth_mm[k]);
+      for (int k = 0; k < 3; ++k) each << ',' << (e.missing ? "" : FormatNumber(e.measured_mm[k]));
+      each << '\n';
+    }
+  }
+  WriteFileAtomically(dir / "landmark_errors.csv", each.str());
+}
+
+void WritePostureCsv(const PostureComparison& posture, const fs::path& file) {
+  std::ostringstream out;
+  out << "measurement,kind,measured_a_mm,measured_b_mm,difference_mm,truth_a_mm,truth_b_mm,judged,"
+         "pass\n";
+  for (const PostureRow& r : posture.rows) {
+    out << Cell(r.name) << ',' << r.kind << ',' << FormatNumber(r.measured_a_mm) << ','
+        << FormatNumber(r.measured_b_mm) << ',' << FormatNumber(r.difference_mm) << ','
+        << FormatNumber(r.truth_a_mm) << ',' << FormatNumber(r.truth_b_mm) << ','
+        << (r.judged ? 1 : 0) << ',' << (r.judged ? (r.pass ? "pass" : "fail") : "") << '\n';
+  }
+  WriteFileAtomically(file, out.str());
+}
+
+json ReportJson(const AccuracyReport& report) {
+  const AccuracySummary& s = report.summary;
+  json verdicts = json::object();
+  for (const MeasurementSummary& m : s.measurements) verdicts[m.name] = ToString(m.verdict);
+  json failures = json::array();
+  for (const SubjectFailure& f : report.failures) {
+    failures.push_back({{"subject", f.subject}, {"stage", f.stage}, {"error", f.error}});
+  }
+  json out = {
+      {"format", "bespoke-accuracy-report"},
+      {"version", 1},
+      {"created_utc", report.created_utc},
+      {"settings", report.settings},
+      {"subjects_compared", s.subjects},
+      {"subjects_failed", report.failures.size()},
+      {"failures", failures},
+      {"iso_20685_1", {{"passed", s.passed}, {"failed", s.failed}, {"not_judged", s.not_judged}}},
+      {"large_girth_mae_mm", NumberOrNull(s.large_girth_mae_mm)},
+      {"median_landmark_error_mm", NumberOrNull(s.median_landmark_error_mm)},
+      {"landmark_frame", s.landmark_frame},
+      {"verdicts", verdicts}};
+  if (report.posture) {
+    const PostureComparison& p = *report.posture;
+    out["posture"] = {{"pose_a", p.pose_a},
+                      {"pose_b", p.pose_b},
+                      {"arm_a_deg", p.arm_a_deg},
+                      {"arm_b_deg", p.arm_b_deg},
+                      {"tolerance_mm", p.tolerance_mm},
+                      {"judged", p.judged},
+                      {"passed", p.passed},
+                      {"max_abs_difference_mm", NumberOrNull(p.max_abs_difference_mm)},
+                      {"pass", p.pass()},
+                      {"error", p.error}};
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string FormatNumber(double value, int digits) {
+  if (!std::isfinite(value)) return "";
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*f", digits, value);
+  return buffer;
+}
+
+void WriteAccuracyReport(const AccuracyReport& report, const fs::path& dir) {
+  CreateDirectories(dir);
+  WriteMeasurementsCsv(report, dir / "measurements.csv");
+  WriteSummaryCsv(report, dir / "summary.csv");
+  WriteLandmarkCsvs(report, dir);
+  if (report.posture) WritePostureCsv(*report.posture, dir / "posture.csv");
+  WriteJsonFile(dir / "settings.json", report.settings);
+  WriteJsonFile(dir / "report.json", ReportJson(report));
+  const std::vector<std::string> plots = WriteAccuracyPlots(report, dir);
+  WriteFileAtomically(dir / "index.html", AccuracyHtml(report, plots));
+}
+
+}  // namespace bespoke

@@ -1,0 +1,297 @@
+#include "eval/accuracy/accuracy_run.h"
+
+#include <Eigen/Geometry>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "eval/accuracy/accuracy_summary.h"
+#include "eval/accuracy/compare.h"
+#include "eval/accuracy/posture.h"
+#include "measure/catalogue/catalogue.h"
+#include "oracle/body/parametric_body.h"
+#include "oracle/scan_sim/scan_truth.h"
+#include "oracle/synth/synth_body.h"
+#include "oracle/truth/reference_measurements.h"
+#include "oracle/truth/truth_file.h"
+#include "scanners/core/atomic_file.h"
+#include "scanners/core/errors.h"
+#include "scanners/core/json_io.h"
+
+namespace bespoke {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+void AccuracyRunOptions::Check() const {
+  if (subjects < 1 || subjects > 1000) throw InputError("--subjects must be 1-1000");
+  if (model != "parametric" && model != "makehuman") {
+    throw InputError("--model must be parametric or makehuman, not '" + model + "'");
+  }
+  if (pose != "a" && pose != "t" && pose != "both")
+    throw InputError("--pose must be a, t or both, not '" + pose + "'");
+  if (pose == "t" && model != "parametric") {
+    throw InputError("--pose t needs --model parametric (MakeHuman bodies come in one pose)");
+  }
+  if (!(a_pose_deg >= 15 && a_pose_deg <= 90) || !(t_pose_deg >= 15 && t_pose_deg <= 90)) {
+    throw InputError("arm angles of the poses must be 15-90 degrees");
+  }
+  if (!(posture_tolerance_mm > 0)) throw InputError("the posture tolerance must be positive");
+  if (jobs < 1 || jobs > 64) throw InputError("--jobs must be 1-64");
+  if (!reuse_set.empty() && !fs::is_regular_file(reuse_set / "set.json")) {
+    throw InputError(reuse_set, "--reuse-set needs a bespoke synth-set folder (no set.json)");
+  }
+  for (const std::string& p : params) {
+    const auto [name, value] = ParseNamedValue(p);
+    if (model == "parametric")
+      ParametricBodyOptions().Set(name, value);  // InputError for unknown names
+  }
+  if (model == "makehuman") {
+    const fs::path dir = makehuman_dir.empty() ? DefaultMakeHumanDir() : makehuman_dir;
+    if (!fs::is_directory(dir)) {
+      throw InputError(dir,
+                       "MakeHuman data not found; give --makehuman-dir or set BESPOKE_SHARED_DIR");
+    }
+  }
+  scanner.Check();
+  clean.Check();
+}
+
+namespace {
+
+struct SubjectSpec {
+  std::string name;
+  std::uint64_t seed = 0;
+  std::vector<std::string> params;
+  const json* reuse_truth = nullptr;  // a body-frame truth document to reuse, or null
+};
+
+struct SubjectOutcome {
+  std::string name;
+  std::string stage;  // where it failed; empty when ok
+  std::string error;
+  json truth;  // the scan's truth (scanner frame)
+  json measured;
+  double time_s = 0;
+};
+
+std::string SubjectName(int i) {
+  char name[32];
+  std::snprintf(name, sizeof(name), "subject_%03d", i);
+  return name;
+}
+
+// The true datum points in the cleaned body frame: scanner-frame truth
+// mapped with the body_from_scanner the cleaning found.
+std::map<std::string, Eigen::Vector3d> GivenLandmarks(const json& scan_truth,
+                                                      const CleanResult& cleaned) {
+  std::map<std::string, Eigen::Vector3d> given;
+  for (const auto& [name, value] : scan_truth.at("landmarks").items()) {
+    given[name] = cleaned.body_from_scanner * Vector3FromJson(value, "truth landmark " + name);
+  }
+  return given;
+}
+
+SubjectOutcome RunSubject(const AccuracyRunOptions& options, const SubjectSpec& spec,
+                          SynthBodyGenerator& generator, const SubjectMeasurer& measurer) {
+  SubjectOutcome out;
+  out.name = spec.name;
+  const auto start = std::chrono::steady_clock::now();
+  std::string stage = "body";
+  try {
+    SynthBodyOptions body_options;
+    body_options.model = options.model;
+    body_options.seed = spec.seed;
+    body_options.params = spec.params;
+    body_options.makehuman_dir = options.makehuman_dir;
+    const Body body = generator.Generate(body_options);
+    stage = "truth";
+    json truth;
+    if (spec.reuse_truth) {
+      truth = *spec.reuse_truth;
+      if (truth.value("/mesh/vertices"_json_pointer, -1) != body.mesh.num_vertices()) {
+        throw InputError("the reused truth.json was made for another body (vertex count differs)");
+      }
+    } else {
+      const Catalogue& catalogue = Catalogue::Builtin();
+      const ReferenceOptions reference;
+      truth = TruthDocument(body, catalogue, reference,
+                            ComputeReferenceMeasurements(reference, catalogue, body));
+    }
+    stage = "scan";
+    ScanSimOptions scan_options = options.scanner;
+    scan_options.seed = spec.seed;
+    ScanSimResult scan = SimulateScan(scan_options, body.mesh);
+    out.truth = ScanTruthDocument(truth, scan_options, scan, LengthUnit::kMillimetre, "(in memory)",
+                                  spec.name);
+    stage = "clean";
+    const CleanResult cleaned = CleanScan(options.clean, std::move(scan.cloud));
+    stage = "measure";
+    std::map<std::string, Eigen::Vector3d> given;
+    if (options.truth_landmarks) given = GivenLandmarks(out.truth, cleaned);
+    out.measured = measurer(cleaned, options.truth_landmarks ? &given : nullptr);
+    if (!out.measured.is_object()) throw InternalError("the measurer returned no document");
+    if (!out.measured.contains("body_from_scanner")) {
+      out.measured["body_from_scanner"] =
+          ToJson(Eigen::Affine3d(cleaned.body_from_scanner.matrix()));
+    }
+    out.measured["clean_flags"] = cleaned.flags;
+  } catch (const std::exception& e) {
+    out.stage = stage;
+    out.error = e.what();
+  }
+  out.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+// Runs `specs` on `jobs` threads (each with its own body generator).
+std::vector<SubjectOutcome> RunSubjects(const AccuracyRunOptions& options,
+                                        const std::vector<SubjectSpec>& specs,
+                                        const SubjectMeasurer& measurer, Progress* progress) {
+  std::vector<SubjectOutcome> outcomes(specs.size());
+  std::atomic<std::size_t> next{0};
+  std::atomic<std::int64_t> done{0};
+  std::mutex progress_mutex;
+  ProgressBegin(progress, "subjects", static_cast<std::int64_t>(specs.size()));
+  const auto work = [&]() {
+    SynthBodyGenerator generator;
+    for (std::size_t i = next++; i < specs.size(); i = next++) {
+      outcomes[i] = RunSubject(options, specs[i], generator, measurer);
+      const std::lock_guard<std::mutex> lock(progress_mutex);
+      ProgressUpdate(progress, ++done);
+    }
+  };
+  const int threads = std::min<int>(options.jobs, static_cast<int>(specs.size()));
+  if (threads <= 1) {
+    work();
+  } else {
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t) pool.emplace_back(work);
+    for (std::thread& t : pool) t.join();
+  }
+  ProgressEnd(progress);
+  return outcomes;
+}
+
+// Truth documents of a synth-set folder made with the same model, seed and
+// parameters, by subject index; InputError when the set does not match.
+std::vector<json> ReusableTruths(const AccuracyRunOptions& options) {
+  std::vector<json> truths(options.subjects);
+  if (options.reuse_set.empty()) return truths;
+  const json set = ReadJsonFile(options.reuse_set / "set.json");
+  if (set.value("model", "") != options.model ||
+      set.value("seed", std::uint64_t{0}) != options.seed ||
+      set.value("params", std::vector<std::string>{}) != options.params) {
+    throw InputError(options.reuse_set / "set.json",
+                     "made with another model, seed or --param than this run");
+  }
+  if (!set.value("reference_measurements", false)) {
+    throw InputError(options.reuse_set / "set.json",
+                     "made with --skip-reference: no reference measurements");
+  }
+  for (int i = 0; i < options.subjects; ++i) {
+    const fs::path file = options.reuse_set / SubjectName(i) / "truth.json";
+    if (fs::is_regular_file(file)) truths[i] = ReadJsonFile(file);
+  }
+  return truths;
+}
+
+std::string NowUtc() {
+  const std::time_t now = std::time(nullptr);
+  char text[32];
+  std::strftime(text, sizeof(text), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  return text;
+}
+
+void WriteSubjectDocuments(const fs::path& dir, const SubjectOutcome& o) {
+  if (dir.empty()) return;
+  CreateDirectories(dir);
+  if (!o.truth.is_null()) WriteJsonFile(dir / (o.name + ".truth.json"), o.truth);
+  if (!o.measured.is_null()) WriteJsonFile(dir / (o.name + ".measurements.json"), o.measured);
+}
+
+}  // namespace
+
+AccuracyReport RunAccuracy(const AccuracyRunOptions& options, const SubjectMeasurer& measurer,
+                           Progress* progress) {
+  options.Check();
+  AccuracyReport report;
+  report.created_utc = NowUtc();
+  const std::vector<json> reuse = ReusableTruths(options);
+  std::vector<SubjectSpec> specs;
+  for (int i = 0; i < options.subjects; ++i) {
+    SubjectSpec spec;
+    spec.name = SubjectName(i);
+    spec.seed = options.seed * 1000 + static_cast<std::uint64_t>(i) + 1;
+    spec.params = options.params;
+    if (options.model == "parametric") {
+      const double arms = options.pose == "t" ? options.t_pose_deg : options.a_pose_deg;
+      spec.params.push_back("arm_abduction_deg=" + std::to_string(arms));
+    }
+    if (!reuse[i].is_null()) spec.reuse_truth = &reuse[i];
+    specs.push_back(spec);
+  }
+  // The posture pair: one parametric body, both poses, run with the subjects.
+  if (options.pose == "both") {
+    for (double arms : {options.a_pose_deg, options.t_pose_deg}) {
+      SubjectSpec spec;
+      spec.name = arms == options.a_pose_deg ? "posture_a" : "posture_t";
+      spec.seed = options.seed * 1000 + 1;
+      if (options.model == "parametric") spec.params = options.params;
+      spec.params.push_back("arm_abduction_deg=" + std::to_string(arms));
+      specs.push_back(spec);
+    }
+  }
+  // Subjects use the run's model; the posture pair is always parametric.
+  std::vector<SubjectOutcome> outcomes;
+  {
+    std::vector<SubjectSpec> main(specs.begin(), specs.begin() + options.subjects);
+    outcomes = RunSubjects(options, main, measurer, progress);
+  }
+  for (const SubjectOutcome& o : outcomes) {
+    WriteSubjectDocuments(options.subjects_dir, o);
+    if (!o.error.empty()) {
+      report.failures.push_back({o.name, o.stage, o.error});
+      continue;
+    }
+    try {
+      report.subjects.push_back(CompareDocuments(o.measured, o.truth, o.name));
+    } catch (const std::exception& e) {
+      report.failures.push_back({o.name, "compare", e.what()});
+    }
+  }
+  report.summary = SummarizeAccuracy(report.subjects, Catalogue::Builtin());
+  if (options.pose == "both") {
+    AccuracyRunOptions parametric = options;
+    parametric.model = "parametric";
+    parametric.reuse_set.clear();
+    const std::vector<SubjectSpec> pair(specs.begin() + options.subjects, specs.end());
+    const std::vector<SubjectOutcome> poses = RunSubjects(parametric, pair, measurer, progress);
+    PostureComparison posture;
+    for (const SubjectOutcome& o : poses) {
+      WriteSubjectDocuments(options.subjects_dir, o);
+      if (!o.error.empty() && posture.error.empty())
+        posture.error = o.name + " (" + o.stage + "): " + o.error;
+    }
+    if (posture.error.empty()) {
+      posture = ComparePostures(poses[0].measured, poses[1].measured, poses[0].truth,
+                                poses[1].truth, options.posture_tolerance_mm);
+    }
+    posture.pose_a = "A-pose";
+    posture.pose_b = "T-pose";
+    posture.arm_a_deg = options.a_pose_deg;
+    posture.arm_b_deg = options.t_pose_deg;
+    report.posture = posture;
+  }
+  json times = json::object();
+  for (const SubjectOutcome& o : outcomes) times[o.name] = o.time_s;
+  report.settings["subject_time_s"] = times;
+  report.title = "Bespoke accuracy report: " + std::to_string(options.subjects) + " " +
+                 options.model + " subjects";
+  return report;
+}
+
+}  // namespace bespoke

@@ -1,0 +1,298 @@
+// Statistics against hand-computed values, ISO 20685-1 classes and verdicts,
+// the comparison of documents built here (frames mapped), the summary, the
+// posture table and the report files.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "eval/accuracy/accuracy_report.h"
+#include "eval/accuracy/accuracy_stats.h"
+#include "eval/accuracy/accuracy_summary.h"
+#include "eval/accuracy/compare.h"
+#include "eval/accuracy/iso_20685.h"
+#include "eval/accuracy/posture.h"
+#include "scanners/core/errors.h"
+#include "scanners/core/json_io.h"
+
+namespace bespoke {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+TEST(AccuracyStats, StudentQuantilesMatchTables) {
+  EXPECT_NEAR(StudentT975(1), 12.7062, 1e-4);
+  EXPECT_NEAR(StudentT975(4), 2.7764, 1e-4);
+  EXPECT_NEAR(StudentT975(29), 2.0452, 1e-4);
+  EXPECT_THROW(StudentT975(0), InputError);
+}
+
+TEST(AccuracyStats, HandComputedValues) {
+  // 1..5 mm: mean 3, SD sqrt(2.5), CI 3 -/+ 2.776445 * sqrt(2.5 / 5).
+  ErrorStats s = SummarizeErrors({1, 2, 3, 4, 5});
+  EXPECT_EQ(s.n, 5);
+  EXPECT_DOUBLE_EQ(s.mean_mm, 3);
+  EXPECT_NEAR(s.sd_mm, 1.581139, 1e-6);
+  EXPECT_NEAR(s.ci_low_mm, 1.036757, 1e-5);
+  EXPECT_NEAR(s.ci_high_mm, 4.963243, 1e-5);
+  EXPECT_DOUBLE_EQ(s.mae_mm, 3);
+  EXPECT_DOUBLE_EQ(s.max_abs_mm, 5);
+  EXPECT_DOUBLE_EQ(s.median_abs_mm, 3);
+  // -2, 0, 2, 4: mean 1, |e| = 2, 0, 2, 4 (MAE 2, median 2), SD sqrt(20/3), t(3) = 3.182446.
+  s = SummarizeErrors({-2, 0, 2, 4});
+  EXPECT_DOUBLE_EQ(s.mean_mm, 1);
+  EXPECT_NEAR(s.sd_mm, 2.581989, 1e-6);
+  EXPECT_NEAR(s.ci_low_mm, -3.108521, 1e-5);
+  EXPECT_NEAR(s.ci_high_mm, 5.108521, 1e-5);
+  EXPECT_DOUBLE_EQ(s.mae_mm, 2);
+  EXPECT_DOUBLE_EQ(s.max_abs_mm, 4);
+  EXPECT_DOUBLE_EQ(s.median_abs_mm, 2);
+}
+
+TEST(AccuracyStats, SmallSamplesAndBadValues) {
+  ErrorStats one = SummarizeErrors({-3});
+  EXPECT_EQ(one.n, 1);
+  EXPECT_DOUBLE_EQ(one.mean_mm, -3);
+  EXPECT_DOUBLE_EQ(one.mae_mm, 3);
+  EXPECT_TRUE(std::isnan(one.sd_mm));
+  EXPECT_TRUE(std::isnan(one.ci_low_mm));
+  EXPECT_TRUE(std::isnan(SummarizeErrors({}).mean_mm));
+  EXPECT_THROW(SummarizeErrors({1, NAN}), InputError);
+  EXPECT_DOUBLE_EQ(Median({4, 1, 3, 2}), 2.5);
+}
+
+TEST(Iso20685, CataloguesClassesAndLimits) {
+  const Catalogue& c = Catalogue::Builtin();
+  for (const char* name : {"bust_girth", "chest_girth", "under_bust_girth", "waist_girth",
+                           "middle_hip_girth", "hip_girth"}) {
+    EXPECT_EQ(IsoClassOf(c.Measurement(name)), IsoClass::kLargeGirth) << name;
+  }
+  for (const char* name : {"neck_girth", "upper_arm_girth", "wrist_girth", "thigh_girth",
+                           "calf_girth", "ankle_girth"}) {
+    EXPECT_EQ(IsoClassOf(c.Measurement(name)), IsoClass::kSmallGirth) << name;
+  }
+  EXPECT_EQ(IsoClassOf(c.Measurement("back_length")), IsoClass::kSegmentLength);
+  EXPECT_EQ(IsoClassOf(c.Measurement("inside_leg")), IsoClass::kSegmentLength);
+  EXPECT_EQ(IsoClassOf(c.Measurement("shoulder_width")), IsoClass::kBreadth);
+  EXPECT_EQ(IsoClassOf(c.Measurement("stature")), IsoClass::kHeight);
+  EXPECT_EQ(IsoToleranceMm(IsoClass::kHeight), 4);
+  EXPECT_EQ(IsoToleranceMm(IsoClass::kSmallGirth), 4);
+  EXPECT_EQ(IsoToleranceMm(IsoClass::kSegmentLength), 5);
+  EXPECT_EQ(IsoToleranceMm(IsoClass::kLargeGirth), 9);
+}
+
+TEST(Iso20685, VerdictUsesTheWholeInterval) {
+  ErrorStats s;
+  s.n = 10;
+  s.ci_low_mm = -3.9, s.ci_high_mm = 3.9;
+  EXPECT_EQ(JudgeIso20685(s, 4), IsoVerdict::kPass);
+  s.ci_low_mm = -4.1, s.ci_high_mm = 1;  // the mean may be fine, the interval is not
+  EXPECT_EQ(JudgeIso20685(s, 4), IsoVerdict::kFail);
+  s.ci_low_mm = 8, s.ci_high_mm = 9.5;
+  EXPECT_EQ(JudgeIso20685(s, 9), IsoVerdict::kFail);
+  EXPECT_EQ(JudgeIso20685(SummarizeErrors({1}), 4), IsoVerdict::kNotJudged);
+}
+
+json Measurement(const std::string& name, const std::string& kind, double value,
+                 std::vector<std::string> flags = {}) {
+  return {{"name", name}, {"kind", kind}, {"value_mm", value}, {"flags", flags}};
+}
+
+// A scanner truth (scanner frame = body turned 90 deg about z and moved) and
+// a measured document in an estimated body frame 3 mm and 1 deg off the true
+// one; the crown is found 2 mm too high, the back neck 5 mm too far back.
+struct Documents {
+  json truth, measured;
+};
+Documents MakeDocuments(double bust_error_mm) {
+  const Eigen::Vector3d crown(0, 10, 1700), back_neck(0, -60, 1400), hip(150, 0, 900);
+  Eigen::Affine3d scanner_from_body = Eigen::Affine3d::Identity();
+  scanner_from_body.rotate(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+  scanner_from_body.pretranslate(Eigen::Vector3d(500, -200, 30));
+  Eigen::Affine3d estimated_body_from_true_body = Eigen::Affine3d::Identity();
+  estimated_body_from_true_body.rotate(Eigen::AngleAxisd(M_PI / 180, Eigen::Vector3d::UnitZ()));
+  estimated_body_from_true_body.pretranslate(Eigen::Vector3d(3, 0, 0));
+  const Eigen::Affine3d body_from_scanner =
+      estimated_body_from_true_body * scanner_from_body.inverse();
+  Documents d;
+  d.truth = {
+      {"format", "bespoke-measurements"},
+      {"version", 1},
+      {"units", "mm"},
+      {"frame", "scanner"},
+      {"landmarks",
+       {{"crown", ToJson(Eigen::Vector3d(scanner_from_body * crown))},
+        {"back_neck", ToJson(Eigen::Vector3d(scanner_from_body * back_neck))},
+        {"hip_right", ToJson(Eigen::Vector3d(scanner_from_body * hip))}}},
+      {"landmarks_body",
+       {{"crown", ToJson(crown)}, {"back_neck", ToJson(back_neck)}, {"hip_right", ToJson(hip)}}},
+      {"scanner_from_body", ToJson(scanner_from_body)},
+      {"measurements",
+       {Measurement("bust_girth", "girth", 930), Measurement("stature", "height", 1700),
+        Measurement("back_length", "length", 400, {"datum_off_section"})}}};
+  const auto found = [&](const Eigen::Vector3d& p) {
+    return ToJson(Eigen::Vector3d(estimated_body_from_true_body * p));
+  };
+  d.measured = {{"format", "bespoke-measurements"},
+                {"version", 1},
+                {"units", "mm"},
+                {"frame", "body"},
+                {"body_from_scanner", ToJson(body_from_scanner)},
+                {"landmarks",
+                 {{"crown", found(crown + Eigen::Vector3d(0, 0, 2))},
+                  {"back_neck", found(back_neck + Eigen::Vector3d(0, -5, 0))}}},
+                {"measurements",
+                 {Measurement("bust_girth", "girth", 930 + bust_error_mm, {"section_open"}),
+                  Measurement("stature", "height", 1701.5)}}};
+  return d;
+}
+
+TEST(CompareDocuments, DifferencesMissingAndFlags) {
+  const Documents d = MakeDocuments(-6);
+  const SubjectComparison c = CompareDocuments(d.measured, d.truth, "s1");
+  ASSERT_EQ(c.measurements.size(), 3u);
+  EXPECT_EQ(c.measurements[0].name, "bust_girth");
+  EXPECT_NEAR(c.measurements[0].difference_mm, -6, 1e-9);
+  EXPECT_EQ(c.measurements[0].flags, std::vector<std::string>{"section_open"});
+  EXPECT_NEAR(c.measurements[1].difference_mm, 1.5, 1e-9);
+  EXPECT_TRUE(c.measurements[2].missing);
+  EXPECT_EQ(c.measurements[2].truth_flags, std::vector<std::string>{"datum_off_section"});
+}
+
+TEST(CompareDocuments, LandmarksInTheScannerFrameIgnoreTheFramesError) {
+  const Documents d = MakeDocuments(0);
+  const SubjectComparison c = CompareDocuments(d.measured, d.truth, "s1");
+  EXPECT_EQ(c.landmark_frame, "scanner");
+  ASSERT_EQ(c.landmarks.size(), 3u);  // by name: back_neck, crown, hip_right
+  EXPECT_EQ(c.landmarks[0].name, "back_neck");
+  EXPECT_NEAR(c.landmarks[0].error_mm, 5, 1e-9);
+  EXPECT_NEAR(c.landmarks[1].error_mm, 2, 1e-9);
+  EXPECT_TRUE(c.landmarks[2].missing);
+  // Without body_from_scanner the body frames are compared directly: the
+  // estimated frame's 3 mm and 1 deg now add to the error.
+  json measured = d.measured;
+  measured.erase("body_from_scanner");
+  const SubjectComparison body = CompareDocuments(measured, d.truth, "s1");
+  EXPECT_EQ(body.landmark_frame, "body");
+  EXPECT_GT(body.landmarks[1].error_mm, 3);
+}
+
+TEST(CompareDocuments, RejectsOtherDocuments) {
+  const Documents d = MakeDocuments(0);
+  EXPECT_THROW(
+      CompareDocuments(json{{"format", "x"}, {"measurements", json::array()}}, d.truth, "s"),
+      InputError);
+  EXPECT_THROW(CompareDocuments(d.measured, json::object(), "s"), InputError);
+  json bad = d.measured;
+  bad["landmarks"]["crown"] = {1, 2};
+  EXPECT_THROW(CompareDocuments(bad, d.truth, "s"), InputError);
+}
+
+TEST(SummarizeAccuracy, PerMeasurementAndHeadline) {
+  std::vector<SubjectComparison> subjects;
+  for (double e : {-6.0, -2.0, 2.0}) {
+    const Documents d = MakeDocuments(e);
+    subjects.push_back(CompareDocuments(d.measured, d.truth, "s"));
+  }
+  const AccuracySummary s = SummarizeAccuracy(subjects, Catalogue::Builtin());
+  EXPECT_EQ(s.subjects, 3);
+  ASSERT_EQ(s.measurements.size(), 3u);  // catalogue order: bust_girth, back_length, stature
+  const MeasurementSummary& bust = s.measurements[0];
+  EXPECT_EQ(bust.name, "bust_girth");
+  EXPECT_EQ(bust.iso_class, IsoClass::kLargeGirth);
+  EXPECT_EQ(bust.stats.n, 3);
+  EXPECT_NEAR(bust.stats.mean_mm, -2, 1e-9);
+  EXPECT_EQ(bust.flagged, 3);
+  EXPECT_EQ(bust.verdict, IsoVerdict::kFail);  // SD 4, CI -2 -/+ 4.303 * 4 / sqrt(3) = [-11.9, 7.9]
+  EXPECT_EQ(s.measurements[1].name, "back_length");
+  EXPECT_EQ(s.measurements[1].missing, 3);
+  EXPECT_EQ(s.measurements[1].verdict, IsoVerdict::kNotJudged);
+  EXPECT_EQ(s.measurements[2].name, "stature");
+  EXPECT_EQ(s.measurements[2].stats.sd_mm, 0);
+  EXPECT_EQ(s.measurements[2].verdict, IsoVerdict::kPass);  // always 1.5 mm: CI [1.5, 1.5]
+  EXPECT_EQ(s.passed, 1);
+  EXPECT_EQ(s.failed, 1);
+  EXPECT_EQ(s.not_judged, 1);
+  EXPECT_NEAR(s.large_girth_mae_mm, 10.0 / 3, 1e-9);
+  EXPECT_NEAR(s.median_landmark_error_mm, 3.5, 1e-9);  // 2, 2, 2, 5, 5, 5
+  EXPECT_EQ(s.landmark_frame, "scanner");
+  ASSERT_GE(s.landmarks.size(), 3u);
+  EXPECT_EQ(s.landmarks[0].name, "crown");  // catalogue order
+  EXPECT_NEAR(s.landmarks[0].median_mm, 2, 1e-9);
+}
+
+TEST(ComparePostures, JudgesLengthsOnly) {
+  const json a = {
+      {"measurements",
+       {Measurement("back_length", "length", 400), Measurement("arm_length", "length", 560),
+        Measurement("upper_arm_girth", "girth", 290)}}};
+  const json b = {
+      {"measurements",
+       {Measurement("back_length", "length", 403), Measurement("arm_length", "length", 552),
+        Measurement("upper_arm_girth", "girth", 300)}}};
+  const PostureComparison p = ComparePostures(a, b, nullptr, nullptr, 5);
+  ASSERT_EQ(p.rows.size(), 3u);
+  EXPECT_TRUE(p.rows[0].pass);
+  EXPECT_FALSE(p.rows[1].pass);
+  EXPECT_FALSE(p.rows[2].judged);
+  EXPECT_EQ(p.judged, 2);
+  EXPECT_EQ(p.passed, 1);
+  EXPECT_NEAR(p.max_abs_difference_mm, 8, 1e-9);
+  EXPECT_FALSE(p.pass());
+  EXPECT_TRUE(std::isnan(p.rows[0].truth_a_mm));
+  // A length the truth has but one pose lacks is a failed row, not a gap.
+  const json truth = {{"measurements", {Measurement("inside_leg", "length", 760)}}};
+  const PostureComparison q = ComparePostures(a, b, truth, truth, 5);
+  ASSERT_EQ(q.rows.size(), 4u);
+  EXPECT_EQ(q.rows[0].name, "inside_leg");
+  EXPECT_TRUE(q.rows[0].judged);
+  EXPECT_FALSE(q.rows[0].pass);
+  EXPECT_EQ(q.judged, 3);
+}
+
+std::string ReadText(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(WriteAccuracyReport, WritesEveryFile) {
+  AccuracyReport report;
+  for (double e : {-6.0, -2.0, 2.0}) {
+    const Documents d = MakeDocuments(e);
+    report.subjects.push_back(CompareDocuments(d.measured, d.truth, "s"));
+  }
+  report.summary = SummarizeAccuracy(report.subjects, Catalogue::Builtin());
+  report.failures.push_back({"s4", "scan", "too few points"});
+  report.settings = {{"subjects", 4}};
+  const Documents d = MakeDocuments(0);
+  report.posture = ComparePostures(d.measured, d.measured, nullptr, nullptr, 5);
+  const fs::path dir =
+      fs::temp_directory_path() / ("accuracy_report_test_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  WriteAccuracyReport(report, dir);
+  for (const char* file :
+       {"index.html", "summary.csv", "measurements.csv", "landmarks.csv", "landmark_errors.csv",
+        "posture.csv", "settings.json", "report.json", "plots/errors_large_girth.png",
+        "plots/hist_bust_girth.png", "plots/landmarks.png"}) {
+    EXPECT_TRUE(fs::exists(dir / file)) << file;
+  }
+  const std::string summary = ReadText(dir / "summary.csv");
+  EXPECT_NE(summary.find("bust_girth,girth,large_girth,9,3,0,3,0,-2.000,4.000,"), std::string::npos)
+      << summary;
+  const std::string html = ReadText(dir / "index.html");
+  EXPECT_NE(html.find("too few points"), std::string::npos);
+  EXPECT_NE(html.find("plots/errors_large_girth.png"), std::string::npos);
+  const json r = ReadJsonFile(dir / "report.json");
+  EXPECT_EQ(r["subjects_failed"], 1);
+  EXPECT_EQ(r["verdicts"]["stature"], "pass");
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace bespoke

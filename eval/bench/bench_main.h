@@ -1,0 +1,29 @@
+// The `main` of the benchmark and evidence tools under eval/bench: runs
+// `run(argc, argv)` and turns errors into a message on stderr naming the tool
+// and an exit code, never an abort: InputError (bad options or input files)
+// -> 1, any other exception -> 2 ("internal error"). Otherwise run's result.
+#ifndef BESPOKE_EVAL_BENCH_BENCH_MAIN_H_
+#define BESPOKE_EVAL_BENCH_BENCH_MAIN_H_
+
+#include <cstdio>
+#include <exception>
+
+#include "scanners/core/errors.h"
+
+namespace bespoke {
+
+inline int RunBenchMain(const char* tool, int (*run)(int, char**), int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "%s: %s\n", tool, e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: internal error: %s\n", tool, e.what());
+    return 2;
+  }
+}
+
+}  // namespace bespoke
+
+#endif  // BESPOKE_EVAL_BENCH_BENCH_MAIN_H_

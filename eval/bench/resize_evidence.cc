@@ -1,0 +1,135 @@
+// Evidence run for issue 6: bodies far from the standard size, each resized
+// from the standard-size design and compared with the design drafted directly
+// for that body and with plain proportional grading (eval/resize/evidence.h).
+// Prints a Markdown table and a summary line; exit code 1 when any body
+// misses a check (binding or seam beyond 1 mm, a self-intersecting outline,
+// or the GA not closer to the direct draft than grading is, by mean distance).
+//
+//   resize_evidence [--design shirt|trousers|both] [--bodies 20] [--population 400]
+//                   [--generations 200] [--truth-dir DIR] [--write DIR]
+//                   [--first 100] [--length-scale 30]
+// With --truth-dir, the bodies are DIR/subject_*/truth.json (from
+// `bespoke synth-set`, measurements in the contracts.md schema); without it,
+// generated measurement sets (resize/designs/body_variants.h). With --write,
+// DIR/<design>-<body>/ gets measurements.json and the fitted, drafted and
+// graded patterns (fitted.json, draft.json, grading.json) for inspection.
+// --first: the first generated body's seed (gen-<first>...); --length-scale:
+// the polish's PolishOptions::length_scale_mm (0 = the polish without it).
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "eval/bench/bench_main.h"
+#include "eval/resize/evidence.h"
+#include "resize/designs/body_variants.h"
+#include "resize/designs/designs.h"
+#include "resize/io/pattern_json.h"
+#include "scanners/core/errors.h"
+#include "scanners/core/json_io.h"
+
+namespace {
+int Run(int argc, char** argv) {
+  using namespace bespoke;
+  ResizeOptions options;
+  int count = 20, first = 100;
+  std::string which = "both";
+  std::filesystem::path truth_dir, write_dir;
+  const char* usage =
+      "usage: resize_evidence [--design shirt|trousers|both] [--bodies 20] [--population 400]\n"
+      "                       [--generations 200] [--truth-dir DIR] [--write DIR]\n"
+      "                       [--first 100] [--length-scale 30]\n";
+  for (int i = 1; i < argc; i += 2) {
+    const bool has_value = i + 1 < argc;
+    if (!std::strcmp(argv[i], "--population") && has_value)
+      options.population = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--generations") && has_value)
+      options.generations = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--bodies") && has_value)
+      count = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--design") && has_value)
+      which = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--truth-dir") && has_value)
+      truth_dir = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--length-scale") && has_value)
+      options.polish_options.length_scale_mm = std::atof(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--first") && has_value)
+      first = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--write") && has_value)
+      write_dir = argv[i + 1];
+    else {
+      std::fputs(usage, stderr);
+      return std::strcmp(argv[i], "--help") && std::strcmp(argv[i], "-h") ? 1 : 0;
+    }
+  }
+  std::vector<std::filesystem::path> truths;
+  if (!truth_dir.empty()) {
+    if (!std::filesystem::is_directory(truth_dir))
+      throw InputError(truth_dir.string() +
+                       ": --truth-dir is not a folder (a `bespoke synth-set` output)");
+    for (const auto& entry : std::filesystem::directory_iterator(truth_dir))
+      if (std::filesystem::exists(entry.path() / "truth.json"))
+        truths.push_back(entry.path() / "truth.json");
+    std::sort(truths.begin(), truths.end());
+    if (static_cast<int>(truths.size()) > count) truths.resize(count);
+    count = static_cast<int>(truths.size());
+  }
+  int failures = 0, rows = 0;
+  std::printf(
+      "| design | body | worst binding mm | worst seam mm | simple | shape deg (draft's) | "
+      "GA-draft mean/max mm | grading-draft mean/max mm | grading worst binding mm | polish from | "
+      "s |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const std::string& design : DesignNames()) {
+    if (which != "both" && which != design) continue;
+    for (int b = 0; b < count; ++b) {
+      MeasurementSet body;
+      std::string name;
+      if (truths.empty()) {
+        body = VariedMeasurements(design, first + b);
+        name = "gen-" + std::to_string(first + b);
+      } else {
+        const MeasurementSet all = ReadMeasurements(truths[b]);
+        for (const auto& [m, v] : BaseMeasurements(design)) {
+          if (!all.count(m)) throw InputError(truths[b], "has no '" + m + "'");
+          body[m] = all.at(m);
+        }
+        name = truths[b].parent_path().filename().string();
+      }
+      FitPatterns patterns;
+      const FitEvidence e = EvaluateFit(options, design, body, &patterns);
+      if (!write_dir.empty()) {
+        const std::filesystem::path dir = write_dir / (design + "-" + name);
+        std::filesystem::create_directories(dir);
+        WriteJsonFile(dir / "measurements.json", MeasurementsToJson(body));
+        WritePatternJson(patterns.fitted, dir / "fitted.json");
+        WritePatternJson(patterns.direct, dir / "draft.json");
+        WritePatternJson(patterns.grading, dir / "grading.json");
+      }
+      const bool ok = e.max_binding_error_mm <= 1 && e.max_seam_mismatch_mm <= 1 &&
+                      e.outlines_simple && e.ga_to_draft.mean_mm < e.grading_to_draft.mean_mm;
+      failures += ok ? 0 : 1;
+      ++rows;
+      std::printf(
+          "| %s | %s | %.3f | %.3f | %s | %.3f (%.3f) | %.1f / %.1f | %.1f / %.1f | %.1f | %s | "
+          "%.2f "
+          "|%s\n",
+          design.c_str(), name.c_str(), e.max_binding_error_mm, e.max_seam_mismatch_mm,
+          e.outlines_simple ? "yes" : "NO", e.shape_deg, e.draft_shape_deg, e.ga_to_draft.mean_mm,
+          e.ga_to_draft.max_mm, e.grading_to_draft.mean_mm, e.grading_to_draft.max_mm,
+          e.grading_max_binding_error_mm, e.polish_start.c_str(), e.time_s, ok ? "" : " **miss**");
+      std::fflush(stdout);
+    }
+  }
+  std::printf("\n%d passed, %d failed\n", rows - failures, failures);
+  return failures == 0 ? 0 : 1;
+}
+}  // namespace
+
+// Errors end the run with a message and an exit code (1 bad input, 2 other).
+int main(int argc, char** argv) {
+  return bespoke::RunBenchMain("resize_evidence", Run, argc, argv);
+}

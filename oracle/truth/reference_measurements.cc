@@ -1,0 +1,263 @@
+#include "oracle/truth/reference_measurements.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "measure/tape/convex_hull_2d.h"
+#include "oracle/truth/cropped_geodesics.h"
+#include "oracle/truth/mesh_section.h"
+#include "scanners/core/errors.h"
+
+namespace bespoke {
+namespace {
+
+using Vec = Eigen::Vector3d;
+
+Vec Landmark(const Body& body, const std::string& name) {
+  const auto it = body.landmarks.find(name);
+  if (it == body.landmarks.end()) throw InputError("the body has no landmark '" + name + "'");
+  return PositionOf(body.mesh, it->second);
+}
+
+// The first datum point or axis point the body lacks, or "".
+std::string MissingLandmark(const MeasurementDef& m, const Body& body) {
+  for (const auto* list : {&m.datum, &m.axis})
+    for (const std::string& name : *list)
+      if (body.landmarks.find(name) == body.landmarks.end()) return name;
+  return "";
+}
+
+// The hull polygon of a loop (3-D points on the plane), in hull order.
+Eigen::MatrixX3d HullPolygon(const SectionLoop& loop, const Vec& normal) {
+  const Vec helper = std::abs(normal.x()) < 0.9 ? Vec::UnitX() : Vec::UnitY();
+  const Vec u = normal.cross(helper).normalized(), v = normal.cross(u);
+  Eigen::MatrixX2d xy(loop.points.rows(), 2);
+  xy.col(0) = loop.points * u;
+  xy.col(1) = loop.points * v;
+  const std::vector<int> hull = ConvexHullIndices(xy);
+  Eigen::MatrixX3d polygon(static_cast<Eigen::Index>(hull.size()), 3);
+  for (std::size_t i = 0; i < hull.size(); ++i)
+    polygon.row(static_cast<Eigen::Index>(i)) = loop.points.row(hull[i]);
+  return polygon;
+}
+
+// The loop of the body part measured: with one datum point the loop through
+// it; with several (a trunk girth) the loop enclosing their centroid, else
+// the one nearest the first.
+int ChooseLoop(const std::vector<SectionLoop>& loops, const MeasurementDef& m, const Body& body,
+               const Vec& normal) {
+  int chosen = -1;
+  if (m.datum.size() > 1) {
+    Vec centroid = Vec::Zero();
+    for (const std::string& name : m.datum) centroid += Landmark(body, name);
+    chosen = EnclosingLoop(loops, centroid / static_cast<double>(m.datum.size()), normal);
+  }
+  return chosen >= 0 ? chosen : NearestLoop(loops, Landmark(body, m.datum[0]));
+}
+
+// True when the loop reaches more than 30 mm beyond the datum points' x
+// range: an arm or hand has merged into the trunk's section.
+bool ReachesPastDatum(const SectionLoop& loop, const MeasurementDef& m, const Body& body) {
+  double lo = 0, hi = 0;
+  for (const std::string& name : m.datum) {
+    const double x = Landmark(body, name).x();
+    lo = std::min(lo, x), hi = std::max(hi, x);
+  }
+  return loop.points.col(0).maxCoeff() > hi + 30 || loop.points.col(0).minCoeff() < lo - 30;
+}
+
+ReferenceMeasurement Girth(const ReferenceOptions& options, const MeasurementDef& m,
+                           const Body& body) {
+  ReferenceMeasurement out{m.name, m.kind, 0, {}, {}};
+  auto [point, normal] = GirthPlaneOf(m, body);
+  std::vector<SectionLoop> loops = SectionLoops(body.mesh, point, normal);
+  if (loops.empty()) throw InternalError("reference " + m.name + ": the plane misses the body");
+  int chosen = ChooseLoop(loops, m, body, normal);
+  // "lower": step down until the trunk's section is free of the arms.
+  for (int step = 0; m.arms == "lower" && step < 100 &&
+                     ReachesPastDatum(loops[static_cast<std::size_t>(chosen)], m, body);
+       ++step) {
+    point.z() -= 1;
+    loops = SectionLoops(body.mesh, point, normal);
+    chosen = ChooseLoop(loops, m, body, normal);
+  }
+  const SectionLoop& loop = loops[static_cast<std::size_t>(chosen)];
+  out.value_mm = LoopHullPerimeter(loop, normal);
+  if (!loop.closed) out.flags.push_back("section_open");
+  if (DistanceToLoop(loop, Landmark(body, m.datum[0])) > options.datum_tolerance_mm)
+    out.flags.push_back("datum_off_section");
+  if (!m.arms.empty() && ReachesPastDatum(loop, m, body))
+    out.flags.push_back("section_includes_arms");
+  if (m.side == "right" && loop.points.col(0).minCoeff() <= 0)
+    out.flags.push_back("section_crosses_midline");
+  if (options.keep_geometry) out.geometry = HullPolygon(loop, normal);
+  return out;
+}
+
+// Exact geodesic lengths between landmark pairs, each on a crop of the mesh
+// that provably holds its shortest path (cropped_geodesics.h): the same
+// values as one CGAL propagation per source over the whole mesh, several
+// times faster on a body (docs/oracle.md has the timings).
+class GeodesicCache {
+ public:
+  GeodesicCache(const Body& body, bool keep_paths, Progress* progress)
+      : body_(body), keep_paths_(keep_paths), progress_(progress) {}
+
+  void Need(const std::string& a, const std::string& b) {
+    if (a != b) pending_.insert(std::minmax(a, b));
+  }
+
+  void Solve() {
+    if (pending_.empty()) return;
+    CroppedExactGeodesics geodesics(body_.mesh);
+    ProgressBegin(progress_, "exact geodesics", static_cast<std::int64_t>(pending_.size()));
+    std::int64_t done = 0;
+    for (const auto& pair : pending_) {  // stored from pair.first to pair.second
+      solved_[pair] = geodesics.Path(body_.landmarks.at(pair.first),
+                                     body_.landmarks.at(pair.second), keep_paths_);
+      ProgressUpdate(progress_, ++done);
+    }
+    pending_.clear();
+    ProgressEnd(progress_);
+  }
+
+  // The path from `a` to `b` (solved before).
+  GeodesicPath Get(const std::string& a, const std::string& b) const {
+    GeodesicPath p;
+    if (a == b) {
+      p.points = Landmark(body_, a).transpose();
+      return p;
+    }
+    p = solved_.at(std::minmax(a, b));
+    if (a > b) p.points = p.points.colwise().reverse().eval();
+    return p;
+  }
+
+ private:
+  const Body& body_;
+  bool keep_paths_;
+  Progress* progress_;
+  std::set<std::pair<std::string, std::string>> pending_;
+  std::map<std::pair<std::string, std::string>, GeodesicPath> solved_;
+};
+
+ReferenceMeasurement Length(const ReferenceOptions& options, const MeasurementDef& m,
+                            const Body& body, const GeodesicCache& geodesics) {
+  ReferenceMeasurement out{m.name, m.kind, 0, {}, {}};
+  const Vec a = Landmark(body, m.datum[0]);
+  if (m.method == MeasurementMethod::kBreadth) {
+    const Vec b = Landmark(body, m.datum[1]);
+    out.value_mm = (a - b).head<2>().norm();
+    if (options.keep_geometry)
+      out.geometry = (Eigen::MatrixX3d(2, 3) << a.transpose(), b.transpose()).finished();
+  } else if (m.method == MeasurementMethod::kPointToLine) {
+    const Vec b = Landmark(body, m.datum[1]), c = Landmark(body, m.datum[2]);
+    const Vec d = (c - b).normalized();
+    const Vec foot = b + (a - b).dot(d) * d;
+    out.value_mm = (a - foot).norm();
+    if (options.keep_geometry)
+      out.geometry = (Eigen::MatrixX3d(2, 3) << a.transpose(), foot.transpose()).finished();
+  } else {  // geodesic chain
+    std::vector<Eigen::MatrixX3d> pieces;
+    for (std::size_t i = 0; i + 1 < m.datum.size(); ++i) {
+      const GeodesicPath p = geodesics.Get(m.datum[i], m.datum[i + 1]);
+      out.value_mm += p.length;
+      pieces.push_back(p.points);
+    }
+    const Vec last = Landmark(body, m.datum.back());
+    if (m.to_floor) {
+      out.value_mm += last.z();
+      pieces.push_back(
+          (Eigen::MatrixX3d(2, 3) << last.transpose(), last.x(), last.y(), 0.0).finished());
+    }
+    if (options.keep_geometry) {
+      Eigen::Index rows = 0;
+      for (const auto& piece : pieces) rows += piece.rows();
+      out.geometry.resize(rows, 3);
+      rows = 0;
+      for (const auto& piece : pieces)
+        out.geometry.middleRows(rows, piece.rows()) = piece, rows += piece.rows();
+    }
+  }
+  return out;
+}
+
+ReferenceMeasurement Height(const MeasurementDef& m, const Body& body) {
+  ReferenceMeasurement out{m.name, m.kind, Landmark(body, m.datum[0]).z(), {}, {}};
+  if (m.datum.size() == 2) out.value_mm -= Landmark(body, m.datum[1]).z();
+  return out;
+}
+
+}  // namespace
+
+void ReferenceOptions::Check() const {
+  if (!(datum_tolerance_mm > 0))
+    throw InputError("reference measurements: datum_tolerance_mm must be > 0");
+}
+
+std::pair<Eigen::Vector3d, Eigen::Vector3d> GirthPlaneOf(const MeasurementDef& m,
+                                                         const Body& body) {
+  if (m.method != MeasurementMethod::kSectionHull)
+    throw InputError("'" + m.name + "' is not a girth measured on a section");
+  switch (m.plane) {
+    case GirthPlane::kHorizontal: {
+      double z = 0;
+      for (const std::string& name : m.datum) z += Landmark(body, name).z();
+      return {Vec(0, 0, z / static_cast<double>(m.datum.size())), Vec::UnitZ()};
+    }
+    case GirthPlane::kPerpendicularToAxis: {
+      const Vec axis = Landmark(body, m.axis[1]) - Landmark(body, m.axis[0]);
+      if (!(axis.norm() > 0)) throw InputError("'" + m.name + "': its axis points coincide");
+      return {Landmark(body, m.datum[0]), axis.normalized()};
+    }
+    case GirthPlane::kThroughPoints: {
+      const Vec a = Landmark(body, m.datum[0]), b = Landmark(body, m.datum[1]);
+      const Vec c = Landmark(body, m.datum[2]);
+      const Vec normal = (b - a).cross(c - a);
+      if (!(normal.norm() > 1e-9 * (b - a).squaredNorm()))
+        throw InputError("'" + m.name + "': its three datum points are collinear");
+      return {a, normal.z() < 0 ? -normal.normalized() : normal.normalized()};
+    }
+    case GirthPlane::kNone:
+      break;
+  }
+  throw InputError("'" + m.name + "' has no girth plane");
+}
+
+ReferenceMeasurements ComputeReferenceMeasurements(const ReferenceOptions& options,
+                                                   const Catalogue& catalogue, const Body& body,
+                                                   Progress* progress) {
+  options.Check();
+  ReferenceMeasurements result;
+  GeodesicCache geodesics(body, options.keep_geometry, progress);
+  std::vector<const MeasurementDef*> todo;
+  for (const MeasurementDef& m : catalogue.measurements()) {
+    const std::string missing = MissingLandmark(m, body);
+    if (!missing.empty()) {
+      result.skipped.emplace_back(m.name, "the body has no landmark '" + missing + "'");
+      continue;
+    }
+    todo.push_back(&m);
+    if (m.method == MeasurementMethod::kGeodesic)
+      for (std::size_t i = 0; i + 1 < m.datum.size(); ++i)
+        geodesics.Need(m.datum[i], m.datum[i + 1]);
+  }
+  geodesics.Solve();
+  for (const MeasurementDef* m : todo) {
+    switch (m->kind) {
+      case MeasurementKind::kGirth:
+        result.measurements.push_back(Girth(options, *m, body));
+        break;
+      case MeasurementKind::kLength:
+        result.measurements.push_back(Length(options, *m, body, geodesics));
+        break;
+      case MeasurementKind::kHeight:
+        result.measurements.push_back(Height(*m, body));
+        break;
+    }
+  }
+  return result;
+}
+
+}  // namespace bespoke

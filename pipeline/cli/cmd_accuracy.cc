@@ -1,0 +1,172 @@
+// `bespoke accuracy --subjects N [--model parametric|makehuman] [--seed S]
+//  [--noise-mm 1] [--pose a|t|both] [--jobs N] [--param k=v ...]
+//  [--reuse-set SYNTH_SET_DIR] [--truth-landmarks] [--keep-subjects] -o REPORT_DIR`
+// Generates N subjects with the oracle, scans them virtually, cleans,
+// finds the landmarks, measures them in-process and compares with the exact
+// truth (eval/accuracy/accuracy_run.h); writes the report
+// (eval/accuracy/accuracy_report.h: index.html, CSV tables, PNG plots,
+// settings.json, report.json) into REPORT_DIR and prints the headline.
+// --pose both (the default for parametric subjects) adds the posture test:
+// the parametric body of seed S * 1000 + 1 in an A-pose and a T-pose.
+// --truth-landmarks measures at the true datum points (mapped into the
+// cleaned frame), separating measuring errors from landmark errors.
+// Exit 0 when the report is written (targets missed or not: the report
+// says), 1 for bad options, 2 when no subject could be measured at all.
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <memory>
+
+#include "eval/accuracy/accuracy_run.h"
+#include "measure/catalogue/catalogue.h"
+#include "measure/landmarks/landmarks.h"
+#include "measure/measurements/measure.h"
+#include "measure/measurements/measurement_document.h"
+#include "pipeline/cli/commands.h"
+#include "pipeline/cli/progress_bar.h"
+#include "pipeline/cli/scan_sim_cli.h"
+#include "scanners/core/atomic_file.h"
+#include "scanners/core/errors.h"
+#include "scanners/core/json_io.h"
+
+namespace bespoke {
+namespace {
+
+struct AccuracyCommandOptions {
+  AccuracyRunOptions run;
+  std::string pose;    // "" = both for parametric, a for makehuman
+  ScanSimCli scanner;  // the virtual scanner's options used here (pipeline/cli/scan_sim_cli.h)
+  bool keep_subjects = false;
+  std::filesystem::path output;
+};
+
+// Landmarks (found, or the given true ones) and measurements of one cleaned scan.
+nlohmann::json MeasureCleaned(const CleanResult& cleaned,
+                              const std::map<std::string, Eigen::Vector3d>* given) {
+  LandmarkSet landmarks;
+  if (given) {
+    for (const auto& [name, position] : *given) {
+      Landmark landmark;
+      landmark.position_mm = position;
+      landmark.method = "truth";
+      landmarks.points[name] = landmark;
+    }
+  } else {
+    landmarks = DetectLandmarks(LandmarkOptions{}, cleaned.cloud);
+  }
+  MeasureOptions options;
+  options.keep_geometry = false;
+  const MeasureResult result = Measure(options, Catalogue::Builtin(), cleaned.cloud, landmarks);
+  const nlohmann::json extra = {
+      {"body_from_scanner", ToJson(Eigen::Affine3d(cleaned.body_from_scanner.matrix()))}};
+  return MeasurementDocument(result, landmarks, extra, false);
+}
+
+void PrintHeadline(const AccuracyReport& report, const std::filesystem::path& dir) {
+  const AccuracySummary& s = report.summary;
+  std::printf("subjects compared %d, failed %zu\n", s.subjects, report.failures.size());
+  std::printf("ISO 20685-1: %d pass, %d fail, %d not judged (of %zu measurements)\n", s.passed,
+              s.failed, s.not_judged, s.measurements.size());
+  std::printf("MAE of large girths: %s mm (target <= %.0f)\n",
+              FormatNumber(s.large_girth_mae_mm).c_str(), report.targets.large_girth_mae_mm);
+  std::printf("median landmark error: %s mm (target <= %.0f)\n",
+              FormatNumber(s.median_landmark_error_mm).c_str(),
+              report.targets.median_landmark_error_mm);
+  if (report.posture) {
+    const PostureComparison& p = *report.posture;
+    if (p.error.empty()) {
+      std::printf("posture: %d of %d lengths within %.0f mm (largest difference %s mm)\n", p.passed,
+                  p.judged, p.tolerance_mm, FormatNumber(p.max_abs_difference_mm).c_str());
+    } else {
+      std::printf("posture: did not run: %s\n", p.error.c_str());
+    }
+  }
+  for (const SubjectFailure& f : report.failures) {
+    std::printf("failed: %s at %s: %s\n", f.subject.c_str(), f.stage.c_str(), f.error.c_str());
+  }
+  std::printf("report: %s\n", (dir / "index.html").string().c_str());
+}
+
+}  // namespace
+
+CommandRunner SetupAccuracyCommand(CLI::App& app) {
+  auto o = std::make_shared<AccuracyCommandOptions>();
+  AccuracyRunOptions& r = o->run;
+  app.add_option("--subjects", r.subjects, "Number of subjects (1-1000)")->required();
+  app.add_option("--model", r.model,
+                 "Body model: parametric (built in) or makehuman (needs ../shared)");
+  app.add_option("--seed", r.seed,
+                 "Seed of the set (subject i uses seed * 1000 + i + 1, as synth-set)");
+  app.add_option("--param", r.params,
+                 "Body size or model value for every subject, name=value (repeatable)");
+  app.add_option("--makehuman-dir", r.makehuman_dir,
+                 "MakeHuman data (default ../shared/data/bodies/makehuman)");
+  app.add_option("--noise-mm", o->scanner.noise_mm,
+                 "Scanner range noise SD along each ray, mm (default 1)");
+  app.add_option("--outliers", o->scanner.outliers,
+                 "Fraction of outlier points in each scan (default 0.02)");
+  app.add_option("--transform", o->scanner.transform,
+                 "Scanner frame: none, random (rigid) or y-up (default none)");
+  app.add_option("--sensors", o->scanner.sensors,
+                 "Booth: DIRECTIONSxHEIGHTS sensors (default 6x7)");
+  app.add_option("--resolution", o->scanner.resolution,
+                 "Depth image per sensor, WIDTHxHEIGHT px (default 240x180)");
+  app.add_option("--pose", o->pose,
+                 "a (A-pose), t (T-pose, parametric) or both (A-pose subjects + the posture test); "
+                 "default both for parametric, a for makehuman");
+  app.add_option("--a-pose-deg", r.a_pose_deg, "Arm abduction of the A-pose, degrees (default 30)");
+  app.add_option("--t-pose-deg", r.t_pose_deg, "Arm abduction of the T-pose, degrees (default 90)");
+  app.add_option("--jobs", r.jobs, "Subjects run at once (threads; default 1)");
+  app.add_option(
+      "--reuse-set", r.reuse_set,
+      "A synth-set folder (same model, seed, --param) whose truth.json files are reused");
+  app.add_flag("--truth-landmarks", r.truth_landmarks,
+               "Measure at the true datum points (isolates measuring from landmark finding)");
+  app.add_flag("--keep-subjects", o->keep_subjects,
+               "Also write each subject's truth and measurements");
+  app.add_option("-o,--output", o->output, "Report folder (created if missing)")->required();
+  return [o](const GlobalOptions& global) {
+    AccuracyRunOptions run = o->run;
+    run.pose = !o->pose.empty() ? o->pose : run.model == "parametric" ? "both" : "a";
+    o->scanner.Check();
+    run.scanner = o->scanner.ToOptions();
+    if (o->keep_subjects) run.subjects_dir = o->output / "subjects";
+    run.Check();
+    CreateDirectories(o->output);
+    ProgressBar bar(global.quiet);
+    AccuracyReport report = RunAccuracy(run, &MeasureCleaned, &bar);
+    nlohmann::json settings = {{"command", "bespoke accuracy"},
+                               {"subjects", run.subjects},
+                               {"model", run.model},
+                               {"seed", run.seed},
+                               {"params", run.params},
+                               {"pose", run.pose},
+                               {"a_pose_deg", run.a_pose_deg},
+                               {"t_pose_deg", run.t_pose_deg},
+                               {"noise_mm", o->scanner.noise_mm},
+                               {"outliers", o->scanner.outliers},
+                               {"transform", o->scanner.transform},
+                               {"sensors", o->scanner.sensors},
+                               {"resolution", o->scanner.resolution},
+                               {"jobs", run.jobs},
+                               {"reuse_set", run.reuse_set.string()},
+                               {"truth_landmarks", run.truth_landmarks},
+                               {"created_utc", report.created_utc}};
+    settings.update(report.settings);
+    if (run.truth_landmarks) {
+      report.title +=
+          " (measured at the TRUE datum points: landmark errors are zero by construction)";
+    }
+    report.settings = settings;
+    WriteAccuracyReport(report, o->output);
+    PrintHeadline(report, o->output);
+    if (report.summary.subjects == 0) {
+      throw InternalError("no subject could be measured; see " +
+                          (o->output / "index.html").string());
+    }
+    return 0;
+  };
+}
+
+}  // namespace bespoke

@@ -1,0 +1,37 @@
+// Test and evaluation fixture of the landmark detector: a generated body
+// (parametric or MakeHuman) scanned by the simulated booth in a random rigid
+// pose, cleaned by scanners/clean, with the body's exact datum points mapped
+// into the cleaned cloud's body frame (through the scan's scanner_from_body
+// and the cleaning's body_from_scanner), so detected and true points can be
+// compared in mm.
+#ifndef BESPOKE_TESTS_SUPPORT_SCANNED_BODY_H_
+#define BESPOKE_TESTS_SUPPORT_SCANNED_BODY_H_
+
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include "oracle/body/body.h"
+#include "scanners/core/types.h"
+
+namespace bespoke::testing {
+
+struct ScannedBodyOptions {
+  std::uint64_t scan_seed = 1;  // default 1: seed of the booth's noise and pose
+  int width_px = 160;           // default 160: depth image width per sensor
+  int height_px = 120;          // default 120: depth image height per sensor
+  double noise_sigma_mm = 1.0;  // default 1 mm: range noise SD
+  bool floor = true;            // default true: a floor patch under the feet
+};
+
+struct ScannedBody {
+  PointCloud cloud;                              // cleaned, body frame (mm)
+  std::map<std::string, Eigen::Vector3d> truth;  // exact datum points, the same frame
+  double clean_s = 0;                            // time of CleanScan (s)
+};
+
+ScannedBody ScanAndClean(const ScannedBodyOptions& options, const Body& body);
+
+}  // namespace bespoke::testing
+
+#endif  // BESPOKE_TESTS_SUPPORT_SCANNED_BODY_H_
