@@ -3,6 +3,7 @@
 #   BUILD_DIR (default build)  BUILD_TYPE (default Release)
 #   BESPOKE_SANITIZE=ON        address + undefined behaviour sanitizers
 #   JOBS (default: number of cores)
+#   TARGETS (default: everything), e.g. TARGETS=bespoke builds only the CLI
 # Extra arguments are passed to cmake's configure step.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,4 +16,6 @@ if command -v ccache >/dev/null 2>&1 && [ "${BESPOKE_CCACHE:-1}" = 1 ]; then
 fi
 cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE="$BUILD_TYPE" \
   -DBESPOKE_SANITIZE="${BESPOKE_SANITIZE:-OFF}" "${launcher[@]}" "$@"
-cmake --build "$BUILD_DIR" -j "$JOBS"
+targets=()
+for t in ${TARGETS:-}; do targets+=(--target "$t"); done
+cmake --build "$BUILD_DIR" -j "$JOBS" "${targets[@]}"
