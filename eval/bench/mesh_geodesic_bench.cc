@@ -210,7 +210,7 @@ void BenchMesh(const Config& config, const std::string& name, const TriangleMesh
           const double t0 = Now();
           MeshSurface surface(MeshPrepOptions{}, mesh, name);
           MeshGeodesicsOptions options;
-          options.whole_path = accurate;
+          options.wavefront.whole_path = accurate;
           MeshGeodesics geodesics(options, surface, 0);
           geodesics.Run();
           std::vector<double> v;
@@ -227,7 +227,7 @@ void BenchMesh(const Config& config, const std::string& name, const TriangleMesh
               "projection fallbacks %lld, rounds %lld, peak window samples %lld\n",
               name.c_str(), accurate ? "Alg2" : "Alg3", static_cast<long long>(s.flows),
               s.flows ? static_cast<double>(s.flow_iterations) / static_cast<double>(s.flows) : 0.0,
-              static_cast<long long>(s.unconverged), static_cast<long long>(s.held_samples),
+              static_cast<long long>(s.unconverged), static_cast<long long>(s.undone),
               static_cast<long long>(s.projection_fallbacks), static_cast<long long>(s.rounds),
               static_cast<long long>(s.peak_window_samples));
           return v;

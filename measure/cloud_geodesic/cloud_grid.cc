@@ -173,10 +173,9 @@ void CloudGrid::FitNodes(const CloudGridOptions& options, const Eigen::MatrixX3d
     // Seed plane from the node's own points (one sheet by construction) when
     // it has at least min_seed_points of them, else from the points within a
     // cell (or the sheet gap, if larger) of it. A plane through a handful of
-    // noisy points tilts: a 5-point sliver along a cell's edge had its
-    // "normal" in the tangent plane, linked to nothing and left islands (21
-    // unreached points and a 21 % error on a noisy sphere; +14 mm 30 mm from
-    // the source on the benchmark's generated scan).
+    // noisy points tilts: a 5-point sliver along a cell's edge can have its
+    // "normal" in the tangent plane, link to nothing and leave islands of
+    // unreached points.
     double planarity = 1;
     LocalSurface seed;
     if (own.rows() >= std::max(5, options.min_seed_points)) seed = PcaPlane(own, &planarity);

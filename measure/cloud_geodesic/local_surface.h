@@ -54,10 +54,9 @@ LocalSurface FitLocalSurface(SurfaceFit fit, const Eigen::MatrixX3d& points,
 // when another lies among its nearest points at an angle (the two faces of a
 // lip a few mm apart). A parallel sheet closer than the wedge's reach (at 30
 // degrees, points of a sheet 3 mm away count from 5.2 mm on) still gets in:
-// positions cannot part those (docs/geodesics.md). Not in the thesis, whose PCA plane of the d
-// nearest points tilts halfway between two such sheets (on the 116k
-// MakeHuman body's lips: normals 70 degrees off). A point belongs to x's sheet
-// when it lies within `wedge_deg` of x's tangent plane as seen from x:
+// positions cannot part those (docs/geodesics.md). Not in the thesis, whose
+// PCA plane of the d nearest points tilts halfway between two such sheets. A point belongs to x's
+// sheet when it lies within `wedge_deg` of x's tangent plane as seen from x:
 //   1. the plane through x and two of its 7 nearest points that minimises
 //      sum over the others of min(e^2, tan^2 wedge), e = |n.(y - x)| / |y - x|
 //      (MSAC; the other sheet's points cost the capped amount);

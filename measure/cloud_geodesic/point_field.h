@@ -2,11 +2,11 @@
 //
 // The thesis's Algorithm 5 gives each grid cell (node) a geodesic; a scan
 // point then takes its node's distance carried to first order. Where a
-// feature is about a cell thick that is not enough: on the 116k MakeHuman
-// body (10.4 mm cells on 3.5 mm spacing) the mouth's and eyes' sheets merge
-// with the skin (-25 mm), toe undersides take the route over the top (+34 mm)
-// and points where two routes meet inside a cell take the longer (+10 mm);
-// max 16.5 % (docs/geodesics.md). This field resolves the scan's own points:
+// feature is about a cell thick that is not enough: the sheets of a mouth or
+// an eye merge with the skin around them, the underside of a toe takes the
+// route over its top, and points where two routes meet inside a cell take
+// the longer (docs/geodesics.md has the errors). This field resolves the
+// scan's own points:
 //
 // A Dijkstra sweep over the points in order of distance from the seeds. A
 // settled point p offers each of its k nearest points q the edge distance
@@ -60,28 +60,25 @@ struct PointFieldOptions {
   // carried to first order (the thesis's cells only).
   bool enabled = true;
   // k nearest points a point offers its distance to; default 12. Fewer
-  // leave a scanner's sparser rows unjoined and the sweep zig-zags (a
-  // generated scan: mean error 1.10 % at 8, 0.13 % at 12); more reach across
-  // slits no sheet test can see without normals (the 116k MakeHuman body's
-  // lips: max 3.4 % at 12, 17.7 % at 16). geodesic_bench with
-  // agree_fraction 0 and the node-based fits of 2026-11-24; docs/geodesics.md.
+  // leave a scanner's sparser rows unjoined and the sweep zig-zags; more
+  // reach across slits (pressed lips) that no sheet test can see without
+  // normals.
   int neighbours = 12;
   double max_chord_angle_deg = 45;  // chord vs both points' tangent planes; default 45
   // Measure chords between the points' feet on their fitted surfaces
-  // (fit_points) rather than the raw points: scan noise (0.5 mm on 1.5 mm spacing)
-  // lengthens raw chords by several per cent. Default true.
+  // (fit_points) rather than the raw points: scan noise lengthens raw chords
+  // by several per cent. Default true.
   bool project_to_surface = true;
   // Each point's tangent plane and foot come from a quadric fitted to those
   // of its `fit_points` nearest points that lie on its own sheet (within
   // `fit_wedge_deg` of its tangent plane as seen from it; FitOwnSheet in
-  // local_surface.h). 0 = its node's surface, fitted over a whole cell (on 6
-  // point-spacing cells the 116k body's max error was 16.5 % that way, the
-  // inside of the mouth reached through the cheek). 0 or 10-256; default 24.
+  // local_surface.h). 0 = its node's surface, fitted over a whole cell (on
+  // coarse cells the inside of a mouth is then reached through the cheek).
+  // 0 or 10-256; default 24.
   int fit_points = 24;
-  // Default 30. Smaller rejects more of a noisy sheet (the noisy spheres
-  // test, 0.5 mm noise on 1.5 mm spacing, seed 3: max 1.04 % at 30, 2.39 % at 25);
-  // larger lets a nearby sheet in (the 116k body: 2.44 % at 30, 2.60 % at 35;
-  // docs/geodesics.md). [5, 60].
+  // The wedge of FitOwnSheet, degrees; default 30, range [5, 60]. Smaller
+  // rejects more of a noisy sheet; larger lets a nearby sheet in
+  // (docs/geodesics.md has the sensitivity table).
   double fit_wedge_deg = 30;
   // p and q are joined only when one lies on the other's fitted surface within
   // this fraction of the sheet gap plus 3 x that fit's RMS residual: two sheets

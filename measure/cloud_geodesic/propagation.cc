@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "measure/mesh_geodesic/window_chain.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
@@ -13,25 +14,13 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 
-void PropagationOptions::Check() const {
-  if (window < 3)
-    throw InputError("propagation: window must be >= 3, got " + std::to_string(window));
-  if (!(band_cells >= 0) || !std::isfinite(band_cells))
-    throw InputError("propagation: band_cells must be >= 0");
-  if (!(tie_cells >= 0) || !std::isfinite(tie_cells))
-    throw InputError("propagation: tie_cells must be >= 0");
-  if (flow_iterations < 1) throw InputError("propagation: flow_iterations must be >= 1");
-  if (!(flow_tolerance_cells > 0) || !std::isfinite(flow_tolerance_cells))
-    throw InputError("propagation: flow_tolerance_cells must be > 0");
-  if (!(replan_cells >= 0) || !std::isfinite(replan_cells))
-    throw InputError("propagation: replan_cells must be >= 0");
-  if (!(max_step_segments > 0) || !std::isfinite(max_step_segments))
-    throw InputError("propagation: max_step_segments must be > 0");
-}
-
 Propagation::Propagation(const PropagationOptions& options, const CloudGrid& grid,
                          const Eigen::Vector3d& source, int source_node)
-    : options_(options), grid_(grid), source_(source), source_node_(source_node) {
+    : options_(options),
+      grid_(grid),
+      source_(source),
+      source_node_(source_node),
+      wavefront_(grid.num_nodes(), options.band_spacings * grid.cell_size_mm()) {
   Init();
   // The source node's path: the source itself, then its site.
   const Eigen::Vector3d& site = grid.site(source_node);
@@ -52,18 +41,13 @@ Propagation::Propagation(const PropagationOptions& options, const CloudGrid& gri
   }
   Store(source_node, window, hints, planes);
   stats_.settled = 1;
-  front_.push_back(source_node);
-  r_max_ = distance_[source_node] + options_.band_cells * grid.cell_size_mm();
-  min_held_ = kInf;
-  max_held_ = 0;
+  wavefront_.Seed(source_node);
+  wavefront_.set_r_max(distance_[source_node] + options_.band_spacings * grid.cell_size_mm());
 }
 
 void Propagation::Init() {
   options_.Check();
-  flow_.max_iterations = options_.flow_iterations;
-  flow_.tolerance_mm = options_.flow_tolerance_cells * grid_.cell_size_mm();
-  flow_.replan_distance_mm = options_.replan_cells * grid_.cell_size_mm();
-  flow_.max_step_segments = options_.max_step_segments;
+  flow_ = FlowOptionsFor(options_, grid_.cell_size_mm());
   const int n = grid_.num_nodes();
   if (source_node_ < 0 || source_node_ >= n)
     throw InputError("propagation: source node " + std::to_string(source_node_) + " out of range");
@@ -75,7 +59,6 @@ void Propagation::Init() {
   count_.assign(static_cast<size_t>(n), 0);
   offset_.assign(static_cast<size_t>(n), 0);
   tangent_.assign(static_cast<size_t>(n), Eigen::Vector3d::Zero());
-  stamp_.assign(static_cast<size_t>(n), -1);
 }
 
 Propagation::Propagation(const PropagationOptions& options, const CloudGrid& grid,
@@ -83,7 +66,8 @@ Propagation::Propagation(const PropagationOptions& options, const CloudGrid& gri
     : options_(options),
       grid_(grid),
       source_(source),
-      source_node_(seeds.empty() ? -1 : seeds.front()) {
+      source_node_(seeds.empty() ? -1 : seeds.front()),
+      wavefront_(grid.num_nodes(), options.band_spacings * grid.cell_size_mm()) {
   if (seeds.empty()) throw InputError("propagation: no seed nodes round the source");
   Init();
   double nearest = kInf;
@@ -106,12 +90,10 @@ Propagation::Propagation(const PropagationOptions& options, const CloudGrid& gri
     if (t.norm() > 0) tangent_[seed] = t.normalized();
     Store(seed, window, hints, planes);
     ++stats_.settled;
-    front_.push_back(seed);
+    wavefront_.Seed(seed);
     nearest = std::min(nearest, distance_[seed]);
   }
-  r_max_ = nearest + options_.band_cells * grid.cell_size_mm();
-  min_held_ = kInf;
-  max_held_ = 0;
+  wavefront_.set_r_max(nearest + options_.band_spacings * grid.cell_size_mm());
 }
 
 void Propagation::Store(int node, const Eigen::MatrixX3d& window, const std::vector<int>& hints,
@@ -125,48 +107,9 @@ void Propagation::Store(int node, const Eigen::MatrixX3d& window, const std::vec
   }
 }
 
-Propagation::Choice Propagation::ChooseParent(int node) const {
-  const Eigen::Vector3d& site = grid_.site(node);
-  struct Candidate {
-    int node;
-    double predicted, cosine, simple;
-  };
-  Candidate found[64];
-  int count = 0;
-  double best = kInf;
-  for (const int* l = grid_.links_begin(node); l != grid_.links_end(node) && count < 64; ++l) {
-    const int v = *l;
-    if (!settled(v)) continue;
-    const Eigen::Vector3d e = site - grid_.site(v);
-    const double length = e.norm();
-    const Eigen::Vector3d& t = tangent_[v];
-    Candidate c{v, distance_[v] + length, 1.0, distance_[v] + length};
-    if (t.squaredNorm() > 0 && length > 0) {
-      const double along = t.dot(e);
-      const Eigen::Vector3d n = grid_.surface(v).normal();
-      Eigen::Vector3d lateral = e - along * t;
-      lateral -= n * n.dot(lateral);
-      // Distance from a virtual source distance_[v] behind v along t,
-      // developed into v's tangent plane (exact on a plane).
-      c.predicted = std::hypot(distance_[v] + along, lateral.norm());
-      c.cosine = along / length;
-    }
-    best = std::min(best, c.predicted);
-    found[count++] = c;
-  }
-  Choice choice;
-  double best_cosine = -kInf;
-  const double tie = options_.tie_cells * grid_.cell_size_mm();
-  for (int i = 0; i < count; ++i) {
-    const Candidate& c = found[i];
-    if (options_.parent_rule == ParentRule::kPredicted && c.predicted > best + tie) continue;
-    if (c.cosine > best_cosine) {
-      best_cosine = c.cosine;
-      choice.parent = c.node;
-      choice.estimate = options_.parent_rule == ParentRule::kPredicted ? c.predicted : c.simple;
-    }
-  }
-  return choice;
+ParentChoice Propagation::ChooseParent(int node) const {
+  return bespoke::ChooseParent(*this, node, options_.parent_rule,
+                               options_.tie_spacings * grid_.cell_size_mm());
 }
 
 void Propagation::Settle(int node, int parent) {
@@ -208,7 +151,7 @@ void Propagation::Settle(int node, int parent) {
       on_surface = grid_.StepOnSurface(hints[i - 1], window.row(i - 1).transpose(), hints[i],
                                        window.row(i).transpose());
     if (!on_surface) {
-      ++stats_.rejected;
+      ++stats_.undone;
       window = inherited;
       hints = inherited_hints;
       planes = inherited_planes;
@@ -230,78 +173,22 @@ void Propagation::Settle(int node, int parent) {
 
 void Propagation::Run(int target, Progress* progress) {
   if (target >= grid_.num_nodes()) throw InputError("propagation: target node out of range");
-  if (done_ || (target >= 0 && settled(target))) return;
-  const double band = options_.band_cells * grid_.cell_size_mm();
-  ProgressBegin(progress, "propagating geodesics", grid_.num_nodes());
-  std::int64_t reported = stats_.settled;
-  std::vector<int> wave;
-  while (!(target >= 0 && settled(target))) {
-    if (front_.empty()) {  // W and W' are exhausted: widen r_max, expand W_next
-      if (next_.empty()) {
-        done_ = true;
-        break;
-      }
-      front_.swap(next_);
-      next_.clear();
-      ++stats_.rounds;
-      r_max_ = band > 0 ? std::max(r_max_, min_held_) + band : std::max(r_max_, max_held_);
-      min_held_ = kInf;
-      max_held_ = 0;
-    }
-    wave.clear();
-    wave.swap(front_);  // W; settled nodes go to W' (front_)
-    for (const int c : wave) {
-      bool held = false;
-      for (const int* l = grid_.links_begin(c); l != grid_.links_end(c); ++l) {
-        if (settled(*l)) continue;
-        const Choice choice = ChooseParent(*l);
-        if (choice.estimate <= r_max_) {
-          Settle(*l, choice.parent);
-          front_.push_back(*l);
-        } else {
-          held = true;
-          min_held_ = std::min(min_held_, choice.estimate);
-          max_held_ = std::max(max_held_, choice.estimate);
-        }
-      }
-      if (held && stamp_[c] != stats_.rounds) {
-        stamp_[c] = static_cast<int>(stats_.rounds);
-        next_.push_back(c);
-      }
-    }
-    if (stats_.settled - reported >= 1024) {
-      reported = stats_.settled;
-      ProgressUpdate(progress, stats_.settled);
-    }
-  }
-  ProgressEnd(progress);
+  wavefront_.Run(*this, target, "propagating geodesics", 1024, progress);
+  stats_.rounds = wavefront_.rounds();
 }
 
 Eigen::MatrixX3d Propagation::Path(int node, std::vector<int>* hints) const {
   if (node < 0 || node >= grid_.num_nodes() || !settled(node))
     throw InputError("propagation: no path to node " + std::to_string(node));
-  std::vector<std::pair<int, int>> chunks;  // (node, samples from its window start)
-  chunks.emplace_back(node, count_[node]);
-  int need = start_[node];
-  for (int cur = parent_[node]; need > 0; cur = parent_[cur]) {
-    BESPOKE_CHECK(cur >= 0, "broken parent chain");
-    const int take = need - start_[cur];
-    BESPOKE_CHECK(take >= 0 && take <= count_[cur], "inconsistent window chain");
-    chunks.emplace_back(cur, take);
-    need = start_[cur];
-  }
-  Eigen::Index total = 0;
-  for (const auto& [n, take] : chunks) total += take;
-  Eigen::MatrixX3d out(total, 3);
-  if (hints) hints->resize(static_cast<size_t>(total));
-  Eigen::Index row = 0;
-  for (auto it = chunks.rbegin(); it != chunks.rend(); ++it)
-    for (int i = 0; i < it->second; ++i, ++row) {
-      const size_t at = static_cast<size_t>(offset_[it->first] + i);
-      out.row(row) = pool_[at].transpose();
-      if (hints) (*hints)[static_cast<size_t>(row)] = pool_hints_[at];
-    }
-  return out;
+  const auto chain =
+      WindowChain(node, parent_, start_, [&](int u) { return count_[static_cast<size_t>(u)]; });
+  return ChainPolyline(
+      chain,
+      [&](int u, int i) {
+        const size_t at = static_cast<size_t>(offset_[static_cast<size_t>(u)] + i);
+        return std::pair<const Eigen::Vector3d&, int>(pool_[at], pool_hints_[at]);
+      },
+      hints);
 }
 
 double Propagation::DistanceNear(int node, const Eigen::Vector3d& x) const {

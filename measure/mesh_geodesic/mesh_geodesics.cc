@@ -6,6 +6,7 @@
 #include <string>
 
 #include "measure/mesh_geodesic/path_projection.h"
+#include "measure/mesh_geodesic/window_chain.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
@@ -48,24 +49,15 @@ bool OnSurface(const MeshSurface& surface, const Eigen::MatrixX3d& path, std::ve
 
 }  // namespace
 
-void MeshGeodesicsOptions::Check() const {
-  if (window < 3)
-    throw InputError("mesh geodesics: window must be >= 3, got " + std::to_string(window));
-  auto positive = [](double x) { return x > 0 && std::isfinite(x); };
-  if (!(band_edges >= 0) || !std::isfinite(band_edges))
-    throw InputError("mesh geodesics: band_edges must be >= 0");
-  if (!(tie_edges >= 0) || !std::isfinite(tie_edges))
-    throw InputError("mesh geodesics: tie_edges must be >= 0");
-  if (flow_iterations < 1) throw InputError("mesh geodesics: flow_iterations must be >= 1");
-  if (!positive(flow_tolerance_edges))
-    throw InputError("mesh geodesics: flow_tolerance_edges must be > 0");
-  if (!(replan_edges >= 0) || !std::isfinite(replan_edges))
-    throw InputError("mesh geodesics: replan_edges must be >= 0");
-}
+void MeshGeodesicsOptions::Check() const { wavefront.Check(); }
 
 MeshGeodesics::MeshGeodesics(const MeshGeodesicsOptions& options, const MeshSurface& surface,
                              int source)
-    : options_(options), surface_(surface), source_(source) {
+    : options_(options),
+      surface_(surface),
+      source_(source),
+      wavefront_(surface.num_vertices(),
+                 options.wavefront.band_spacings * surface.mean_edge_length()) {
   options_.Check();
   const int n = surface.num_vertices();
   if (source < 0 || source >= n)
@@ -76,16 +68,13 @@ MeshGeodesics::MeshGeodesics(const MeshGeodesicsOptions& options, const MeshSurf
     throw InputError(surface.name(),
                      "source vertex " + std::to_string(source) + " is used by no face");
   const double edge = surface.mean_edge_length();
-  flow_.max_iterations = options_.flow_iterations;
-  flow_.tolerance_mm = options_.flow_tolerance_edges * edge;
-  flow_.replan_distance_mm = options_.replan_edges * edge;
+  flow_ = FlowOptionsFor(options_.wavefront, edge);
   const auto size = static_cast<size_t>(n);
   offset_.assign(size, kInf);
   projected_.assign(size, kInf);
   bound_.assign(size, kInf);
   parent_.assign(size, -1);
   start_.assign(size, 0);
-  stamp_.assign(size, -1);
   settled_.assign(size, 0);
   tangent_.assign(size, Eigen::Vector3d::Zero());
   windows_.resize(size);
@@ -105,51 +94,13 @@ MeshGeodesics::MeshGeodesics(const MeshGeodesicsOptions& options, const MeshSurf
   for (const int* u = surface.neighbours_begin(source); u != surface.neighbours_end(source); ++u)
     --open_[static_cast<size_t>(*u)];
   stats_.settled = 1;
-  front_.push_back(source);
-  r_max_ = options_.band_edges * edge;
-  min_held_ = kInf;
+  wavefront_.Seed(source);
+  wavefront_.set_r_max(options_.wavefront.band_spacings * edge);
 }
 
-MeshGeodesics::Choice MeshGeodesics::ChooseParent(int v) const {
-  const Eigen::Vector3d site = surface_.position(v);
-  struct Candidate {
-    int vertex;
-    double predicted, cosine;
-  };
-  Candidate found[64];
-  int count = 0;
-  double best = kInf;
-  for (const int* l = surface_.neighbours_begin(v); l != surface_.neighbours_end(v) && count < 64;
-       ++l) {
-    const int u = *l;
-    if (!settled(u)) continue;
-    const Eigen::Vector3d e = site - surface_.position(u);
-    const double length = e.norm();
-    const Eigen::Vector3d& t = tangent_[static_cast<size_t>(u)];
-    Candidate c{u, offset_[size_t(u)] + length, 1.0};
-    if (t.squaredNorm() > 0 && length > 0) {
-      // Distance from a virtual source offset_[u] behind u along its tangent,
-      // developed into u's tangent plane (exact on a plane).
-      const double along = t.dot(e);
-      const Eigen::Vector3d& n = surface_.normal(u);
-      Eigen::Vector3d lateral = e - along * t;
-      lateral -= n * n.dot(lateral);
-      c.predicted = std::hypot(offset_[size_t(u)] + along, lateral.norm());
-      c.cosine = along / length;
-    }
-    best = std::min(best, c.predicted);
-    found[count++] = c;
-  }
-  Choice choice;
-  double best_cosine = -kInf;
-  const double tie = options_.tie_edges * surface_.mean_edge_length();
-  for (int i = 0; i < count; ++i) {
-    if (found[i].predicted > best + tie || found[i].cosine <= best_cosine) continue;
-    best_cosine = found[i].cosine;
-    choice.parent = found[i].vertex;
-    choice.estimate = found[i].predicted;
-  }
-  return choice;
+ParentChoice MeshGeodesics::ChooseParent(int v) const {
+  return bespoke::ChooseParent(*this, v, options_.wavefront.parent_rule,
+                               options_.wavefront.tie_spacings * surface_.mean_edge_length());
 }
 
 void MeshGeodesics::Release(int v) {
@@ -162,7 +113,8 @@ void MeshGeodesics::Release(int v) {
 void MeshGeodesics::Settle(int v, int parent) {
   const std::vector<Sample>& pw = windows_[static_cast<size_t>(parent)];
   const int k = static_cast<int>(pw.size());
-  const int drop = options_.whole_path ? 0 : std::max(0, k + 1 - options_.window);
+  const int drop =
+      options_.wavefront.whole_path ? 0 : std::max(0, k + 1 - options_.wavefront.window);
   const int m = k + 1 - drop;
   path_.resize(m, 3);
   hints_.resize(static_cast<size_t>(m));
@@ -194,7 +146,7 @@ void MeshGeodesics::Settle(int v, int parent) {
       std::copy(part_planes.begin(), part_planes.end(), planes_.end() - tail);
       break;
     }
-    ++stats_.held_samples;
+    ++stats_.undone;
   }
   FillMissingPlanes(surface_, path_, &hints_, &planes_);
   std::vector<Sample> window(static_cast<size_t>(m));
@@ -238,7 +190,7 @@ void MeshGeodesics::Settle(int v, int parent) {
   start_[at] = start_[size_t(parent)] + drop;
   offset_[at] = window.back().arc;
   projected_[at] = options_.project ? window.back().projected : kInf;
-  bound_[at] = options_.whole_path ? 0 : bound;
+  bound_[at] = options_.wavefront.whole_path ? 0 : bound;
   Eigen::Vector3d t = (path_.row(m - 1) - path_.row(m - 2)).transpose();
   const Eigen::Vector3d& normal = surface_.normal(v);
   t -= normal * normal.dot(t);
@@ -256,78 +208,23 @@ void MeshGeodesics::Settle(int v, int parent) {
 void MeshGeodesics::Run(int target, Progress* progress) {
   if (target >= surface_.num_vertices())
     throw InputError("mesh geodesics: target vertex out of range");
-  if (done_ || (target >= 0 && settled(target))) return;
-  const double band = options_.band_edges * surface_.mean_edge_length();
-  ProgressBegin(progress, "propagating mesh geodesics", surface_.num_vertices());
-  std::int64_t reported = stats_.settled;
-  std::vector<int> wave;
-  while (!(target >= 0 && settled(target))) {
-    if (front_.empty()) {  // W and W' are exhausted: widen r_max, expand W_next
-      if (next_.empty()) {
-        done_ = true;
-        break;
-      }
-      front_.swap(next_);
-      next_.clear();
-      ++stats_.rounds;
-      r_max_ = std::max(r_max_, min_held_) + band;
-      min_held_ = kInf;
-    }
-    wave.clear();
-    wave.swap(front_);  // W; newly settled vertices go to W' (front_)
-    for (const int c : wave) {
-      bool held = false;
-      for (const int* l = surface_.neighbours_begin(c); l != surface_.neighbours_end(c); ++l) {
-        if (settled(*l)) continue;
-        const Choice choice = ChooseParent(*l);
-        if (choice.estimate <= r_max_) {
-          Settle(*l, choice.parent);
-          front_.push_back(*l);
-        } else {
-          held = true;
-          min_held_ = std::min(min_held_, choice.estimate);
-        }
-      }
-      if (held && stamp_[size_t(c)] != stats_.rounds) {
-        stamp_[size_t(c)] = static_cast<int>(stats_.rounds);
-        next_.push_back(c);
-      }
-    }
-    if (stats_.settled - reported >= 4096) {
-      reported = stats_.settled;
-      ProgressUpdate(progress, stats_.settled);
-    }
-  }
-  ProgressEnd(progress);
+  wavefront_.Run(*this, target, "propagating mesh geodesics", 4096, progress);
+  stats_.rounds = wavefront_.rounds();
 }
 
 Eigen::MatrixX3d MeshGeodesics::Path(int v, std::vector<int>* hints) const {
   if (v < 0 || v >= surface_.num_vertices() || !settled(v))
     throw InputError("mesh geodesics: no path to vertex " + std::to_string(v));
   if (!options_.keep_paths) throw InputError("mesh geodesics: paths were not kept (keep_paths)");
-  std::vector<std::pair<int, int>> chunks;  // (vertex, samples taken from its window)
-  chunks.emplace_back(v, static_cast<int>(windows_[size_t(v)].size()));
-  int need = start_[size_t(v)];
-  for (int cur = parent_[size_t(v)]; need > 0; cur = parent_[size_t(cur)]) {
-    BESPOKE_CHECK(cur >= 0, "broken parent chain");
-    const int take = need - start_[size_t(cur)];
-    BESPOKE_CHECK(take >= 0 && take <= static_cast<int>(windows_[size_t(cur)].size()),
-                  "inconsistent window chain");
-    chunks.emplace_back(cur, take);
-    need = start_[size_t(cur)];
-  }
-  Eigen::Index total = 0;
-  for (const auto& chunk : chunks) total += chunk.second;
-  Eigen::MatrixX3d out(total, 3);
-  if (hints) hints->resize(static_cast<size_t>(total));
-  Eigen::Index row = 0;
-  for (auto it = chunks.rbegin(); it != chunks.rend(); ++it)
-    for (int i = 0; i < it->second; ++i, ++row) {
-      const Sample& s = windows_[size_t(it->first)][size_t(i)];
-      out.row(row) = s.point.transpose();
-      if (hints) (*hints)[size_t(row)] = s.hint;
-    }
-  return out;
+  const auto chain = WindowChain(
+      v, parent_, start_, [&](int u) { return static_cast<int>(windows_[size_t(u)].size()); });
+  return ChainPolyline(
+      chain,
+      [&](int u, int i) {
+        const Sample& s = windows_[size_t(u)][size_t(i)];
+        return std::pair<const Eigen::Vector3d&, int>(s.point, s.hint);
+      },
+      hints);
 }
 
 }  // namespace bespoke

@@ -37,31 +37,28 @@
 
 #include "measure/mesh_geodesic/curvature_flow.h"
 #include "measure/mesh_geodesic/mesh_surface.h"
+#include "measure/mesh_geodesic/wavefront.h"
 #include "scanners/core/progress.h"
 
 namespace bespoke {
 
 struct MeshGeodesicsOptions {
-  int window = 30;          // w, samples flowed per new vertex (Algorithm 3); default 30
-  bool whole_path = false;  // Algorithm 2: flow every whole path; default off
+  // The propagation; lengths in mean edge lengths. Edges are finer than a
+  // grid's cells, so the flow's tolerance defaults to 0.002 edges.
+  WavefrontOptions wavefront = MeshWavefrontDefaults();
   bool project = true;      // Algorithm 1 projected distances; default on
   bool keep_paths = false;  // keep every window so Path() works; default off
-  double band_edges = 0.5;  // r_max grows by this many mean edge lengths; default 0.5
-  double tie_edges = 0.05;  // parent ties within this many mean edges; default 0.05
-  int flow_iterations = 6;  // flow iterations per vertex; default 6
-  double flow_tolerance_edges = 0.002;  // flow converged below this move; default 0.002 edges
-  double replan_edges = 0.1;            // planes re-estimated after a slide of 0.1 edges (default)
-  void Check() const;                   // InputError when out of range
+  void Check() const;       // InputError when out of range
+
+  static WavefrontOptions MeshWavefrontDefaults() {
+    WavefrontOptions defaults;
+    defaults.flow_tolerance_spacings = 0.002;
+    return defaults;
+  }
 };
 
-struct MeshGeodesicsStats {
-  std::int64_t settled = 0;               // vertices with a geodesic
-  std::int64_t flows = 0;                 // curvature-flow solves
-  std::int64_t flow_iterations = 0;       // their iterations in total
-  std::int64_t unconverged = 0;           // solves that hit flow_iterations
-  std::int64_t held_samples = 0;          // flows undone (left the surface or cut a gap)
+struct MeshGeodesicsStats : WavefrontStats {
   std::int64_t projection_fallbacks = 0;  // projected segments measured as chords
-  std::int64_t rounds = 0;                // times r_max grew
   std::int64_t peak_window_samples = 0;   // most samples stored at once
 };
 
@@ -93,11 +90,19 @@ class MeshGeodesics {
     double arc = 0, projected = 0;  // lengths from the source to here
     int hint = -1;
   };
-  struct Choice {
-    int parent = -1;
-    double estimate = 0;
-  };
-  Choice ChooseParent(int v) const;
+  friend class Wavefront;
+  template <class View>
+  friend ParentChoice ChooseParent(const View&, int, ParentRule, double);
+  // The solver interface of Wavefront and ChooseParent (parent_choice.h).
+  int num_nodes() const { return surface_.num_vertices(); }
+  const int* neighbours_begin(int v) const { return surface_.neighbours_begin(v); }
+  const int* neighbours_end(int v) const { return surface_.neighbours_end(v); }
+  std::int64_t settled_count() const { return stats_.settled; }
+  double distance(int v) const { return offset_[static_cast<size_t>(v)]; }
+  const Eigen::Vector3d& tangent(int v) const { return tangent_[static_cast<size_t>(v)]; }
+  Eigen::Vector3d position(int v) const { return surface_.position(v); }
+  const Eigen::Vector3d& normal(int v) const { return surface_.normal(v); }
+  ParentChoice ChooseParent(int v) const;
   void Settle(int v, int parent);
   void Release(int v);
 
@@ -106,14 +111,12 @@ class MeshGeodesics {
   const MeshSurface& surface_;
   int source_;
   std::vector<double> offset_, projected_, bound_;
-  std::vector<int> parent_, start_, open_, stamp_;
+  std::vector<int> parent_, start_, open_;
   std::vector<char> settled_;
   std::vector<Eigen::Vector3d> tangent_;
   std::vector<std::vector<Sample>> windows_;
-  std::vector<int> front_, next_;
-  double r_max_ = 0, min_held_ = 0;
+  Wavefront wavefront_;
   std::int64_t live_samples_ = 0;
-  bool done_ = false;
   MeshGeodesicsStats stats_;
   // Scratch reused by Settle.
   Eigen::MatrixX3d path_;

@@ -46,7 +46,7 @@ Errors Compare(const MeshGeodesics& g, int n, double floor, Reference reference)
 
 MeshGeodesics Solve(const MeshSurface& surface, int source, bool accurate, bool keep = false) {
   MeshGeodesicsOptions options;
-  options.whole_path = accurate;
+  options.wavefront.whole_path = accurate;
   options.keep_paths = keep;
   MeshGeodesics g(options, surface, source);
   g.Run();
@@ -139,7 +139,7 @@ TEST(MeshGeodesics, PathsRebuildAndProjectOntoTheFaces) {
 TEST(MeshGeodesics, RejectsBadOptionsAndSources) {
   const MeshSurface surface(MeshPrepOptions{}, testing::FlatGrid(4, 4, 1, 0), "grid");
   MeshGeodesicsOptions options;
-  options.window = 2;
+  options.wavefront.window = 2;
   EXPECT_THROW(MeshGeodesics(options, surface, 0), InputError);
   EXPECT_THROW(MeshGeodesics(MeshGeodesicsOptions{}, surface, 16), InputError);
   EXPECT_THROW(MeshGeodesics(MeshGeodesicsOptions{}, surface, -1), InputError);

@@ -125,8 +125,8 @@ int Run(const MeshGeodesicCommandOptions& o, const GlobalOptions& global) {
     }
   } else {
     MeshGeodesicsOptions options;
-    options.window = o.window;
-    options.whole_path = o.algorithm == "accurate";
+    options.wavefront.window = o.window;
+    options.wavefront.whole_path = o.algorithm == "accurate";
     options.keep_paths = !o.path_out.empty();
     MeshGeodesics geodesics(options, surface, o.source);
     geodesics.Run(o.field_out.empty() ? o.target : -1, &progress);
@@ -145,7 +145,7 @@ int Run(const MeshGeodesicCommandOptions& o, const GlobalOptions& global) {
     report["stats"] = {{"settled", s.settled},
                        {"flows", s.flows},
                        {"unconverged", s.unconverged},
-                       {"held", s.held_samples},
+                       {"held", s.undone},
                        {"projection_fallbacks", s.projection_fallbacks}};
     report["window"] = o.window;
   }
