@@ -5,7 +5,7 @@
 //   BESPOKE_CLEAN_BENCH_SPACING_MM  sample spacing of the synthetic scene
 //                                   (default 3.5: ~440k points)
 //
-// The scene: tests/support/synthetic_scene.h (a person on a 1.6 m floor, a
+// The scene: oracle/scene/synthetic_scene.h (a person on a 1.6 m floor, a
 // pole, stray points), randomly rotated. The stage comparisons run on that
 // scene voxelised at 4 mm, as in the chain:
 //   Neighbours+SOR+ROR+Normals (ours: one shared FLANN query) vs PCL's
@@ -25,9 +25,9 @@
 
 #include <cstdlib>
 
+#include "oracle/scene/synthetic_scene.h"
 #include "scanners/clean/clean.h"
 #include "scanners/clean/neighbours.h"
-#include "tests/support/synthetic_scene.h"
 
 namespace bespoke {
 namespace {

@@ -26,8 +26,8 @@
 #include "measure/landmarks/landmarks.h"
 #include "oracle/body/parametric_body.h"
 #include "oracle/makehuman/makehuman_body.h"
+#include "oracle/scan_sim/scanned_body.h"
 #include "scanners/core/errors.h"
-#include "tests/support/scanned_body.h"
 
 namespace bespoke {
 namespace {

@@ -18,8 +18,8 @@
 #include "measure/catalogue/catalogue.h"
 #include "oracle/body/parametric_body.h"
 #include "oracle/makehuman/makehuman_body.h"
+#include "oracle/scan_sim/scanned_body.h"
 #include "scanners/core/errors.h"
-#include "tests/support/scanned_body.h"
 #include "tests/support/test_support.h"
 
 namespace bespoke {

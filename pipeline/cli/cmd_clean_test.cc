@@ -9,10 +9,10 @@
 #include <fstream>
 #include <sstream>
 
+#include "oracle/scene/synthetic_scene.h"
 #include "scanners/core/json_io.h"
 #include "scanners/io/scan_io.h"
 #include "tests/support/run_command.h"
-#include "tests/support/synthetic_scene.h"
 #include "tests/support/test_support.h"
 
 #ifndef BESPOKE_BINARY

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
+#include "oracle/scene/synthetic_scene.h"
 #include "scanners/core/errors.h"
-#include "tests/support/synthetic_scene.h"
 
 namespace bespoke {
 namespace {

@@ -9,10 +9,10 @@
 
 #include "oracle/body/parametric_body.h"
 #include "oracle/scan_sim/scan_sim.h"
+#include "oracle/scene/synthetic_scene.h"
 #include "scanners/clean/clean.h"
 #include "scanners/clean/neighbours.h"
 #include "scanners/io/scan_io.h"
-#include "tests/support/synthetic_scene.h"
 #include "tests/support/test_support.h"
 
 namespace bespoke {

@@ -6,10 +6,10 @@
 
 #include <cmath>
 
+#include "oracle/scene/synthetic_scene.h"
 #include "scanners/clean/clean_json.h"
 #include "scanners/clean/neighbours.h"
 #include "scanners/core/units.h"
-#include "tests/support/synthetic_scene.h"
 
 namespace bespoke {
 namespace {

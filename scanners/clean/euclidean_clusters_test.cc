@@ -8,7 +8,7 @@
 #include <map>
 #include <random>
 
-#include "tests/support/synthetic_scene.h"
+#include "oracle/scene/synthetic_scene.h"
 
 namespace bespoke {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "tests/support/synthetic_scene.h"
+#include "oracle/scene/synthetic_scene.h"
 
 namespace bespoke {
 namespace {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <random>
 
+#include "oracle/scene/synthetic_scene.h"
 #include "scanners/clean/voxel_grid.h"
-#include "tests/support/synthetic_scene.h"
 
 namespace bespoke {
 namespace {

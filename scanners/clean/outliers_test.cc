@@ -7,8 +7,8 @@
 
 #include <random>
 
+#include "oracle/scene/synthetic_scene.h"
 #include "scanners/clean/voxel_grid.h"
-#include "tests/support/synthetic_scene.h"
 
 namespace bespoke {
 namespace {

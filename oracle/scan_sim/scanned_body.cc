@@ -1,4 +1,4 @@
-#include "tests/support/scanned_body.h"
+#include "oracle/scan_sim/scanned_body.h"
 
 #include <chrono>
 

@@ -28,8 +28,8 @@
 // (GuessLengthUnit accepts 0.5-2.6 m): a small floor and no object keep any rotation of it
 // under 2.6 m. Finally every point and normal is mapped by `scanner_from_body` and the points are
 // divided by `mm_per_unit` (1000 writes metres).
-#ifndef BESPOKE_TESTS_SUPPORT_SYNTHETIC_SCENE_H_
-#define BESPOKE_TESTS_SUPPORT_SYNTHETIC_SCENE_H_
+#ifndef BESPOKE_ORACLE_SCENE_SYNTHETIC_SCENE_H_
+#define BESPOKE_ORACLE_SCENE_SYNTHETIC_SCENE_H_
 
 #include <Eigen/Geometry>
 #include <cstdint>
@@ -83,4 +83,4 @@ double AngleDeg(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
 
 }  // namespace bespoke::testing
 
-#endif  // BESPOKE_TESTS_SUPPORT_SYNTHETIC_SCENE_H_
+#endif  // BESPOKE_ORACLE_SCENE_SYNTHETIC_SCENE_H_

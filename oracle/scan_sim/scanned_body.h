@@ -4,8 +4,8 @@
 // into the cleaned cloud's body frame (through the scan's scanner_from_body
 // and the cleaning's body_from_scanner), so detected and true points can be
 // compared in mm.
-#ifndef BESPOKE_TESTS_SUPPORT_SCANNED_BODY_H_
-#define BESPOKE_TESTS_SUPPORT_SCANNED_BODY_H_
+#ifndef BESPOKE_ORACLE_SCAN_SIM_SCANNED_BODY_H_
+#define BESPOKE_ORACLE_SCAN_SIM_SCANNED_BODY_H_
 
 #include <cstdint>
 #include <map>
@@ -34,4 +34,4 @@ ScannedBody ScanAndClean(const ScannedBodyOptions& options, const Body& body);
 
 }  // namespace bespoke::testing
 
-#endif  // BESPOKE_TESTS_SUPPORT_SCANNED_BODY_H_
+#endif  // BESPOKE_ORACLE_SCAN_SIM_SCANNED_BODY_H_

@@ -1,4 +1,4 @@
-#include "tests/support/synthetic_scene.h"
+#include "oracle/scene/synthetic_scene.h"
 
 #include <algorithm>
 #include <cmath>
