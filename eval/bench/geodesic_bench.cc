@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "eval/bench/bench_main.h"
+#include "eval/bench/child_run.h"
 #include "measure/catalogue/catalogue.h"
 #include "measure/cloud_geodesic/cloud_geodesics.h"
 #include "measure/cloud_geodesic/local_surface.h"
@@ -67,50 +68,11 @@ CloudGeodesicsOptions g_options;
 // Runs `work` in a child process; returns its numbers, and its peak resident
 // memory in MB through `peak_mb` (its CPU time in g_child_cpu_s).
 std::vector<double> InChild(const std::function<std::vector<double>()>& work, double* peak_mb) {
-  int fds[2];
-  if (pipe(fds) != 0) throw InternalError("pipe failed");
-  const pid_t pid = fork();
-  if (pid == 0) {
-    close(fds[0]);
-    std::vector<double> out;
-    try {
-      out = work();
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "child failed: %s\n", e.what());
-      _exit(1);
-    }
-    const std::size_t n = out.size();
-    if (write(fds[1], &n, sizeof n) != sizeof n) _exit(2);
-    const char* p = reinterpret_cast<const char*>(out.data());
-    for (std::size_t left = n * sizeof(double); left > 0;) {
-      const ssize_t w = write(fds[1], p, left);
-      if (w <= 0) _exit(2);
-      p += w;
-      left -= static_cast<std::size_t>(w);
-    }
-    _exit(0);
-  }
-  close(fds[1]);
-  std::size_t n = 0;
-  std::vector<double> out;
-  if (read(fds[0], &n, sizeof n) == sizeof n) {
-    out.resize(n);
-    char* p = reinterpret_cast<char*>(out.data());
-    for (std::size_t left = n * sizeof(double); left > 0;) {
-      const ssize_t r = read(fds[0], p, left);
-      if (r <= 0) break;
-      p += r;
-      left -= static_cast<std::size_t>(r);
-    }
-  }
-  close(fds[0]);
-  int status = 0;
-  struct rusage usage {};
-  wait4(pid, &status, 0, &usage);
-  *peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;
-  g_child_cpu_s = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
-                  1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) throw InternalError("child run failed");
+  ChildUsage usage;
+  std::vector<double> out = RunInChild(work, &usage);
+  *peak_mb = usage.peak_mb;
+  g_child_cpu_s = usage.cpu_s;
+  if (!usage.ok) throw InternalError("child run failed");
   return out;
 }
 

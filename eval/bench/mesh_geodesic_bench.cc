@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "eval/bench/bench_main.h"
+#include "eval/bench/child_run.h"
 #include "measure/mesh_geodesic/mesh_geodesics.h"
 #include "oracle/truth/exact_geodesics.h"
 #include "scanners/core/errors.h"
@@ -49,54 +50,10 @@ double g_child_cpu_s = 0;
 // Runs `work` in a forked child; returns what it returned (doubles through a
 // pipe) and its peak resident memory in MB. Empty on failure.
 std::vector<double> InChild(const std::function<std::vector<double>()>& work, double* peak_mb) {
-  int fds[2];
-  if (pipe(fds) != 0) throw InternalError("pipe failed");
-  std::fflush(stdout);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    close(fds[0]);
-    std::vector<double> out;
-    try {
-      out = work();
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "  run failed: %s\n", e.what());
-      _exit(1);
-    }
-    const size_t n = out.size();
-    if (write(fds[1], &n, sizeof n) != sizeof n) _exit(2);
-    const char* p = reinterpret_cast<const char*>(out.data());
-    for (size_t left = n * sizeof(double); left > 0;) {
-      const ssize_t w = write(fds[1], p, left);
-      if (w <= 0) _exit(2);
-      p += w;
-      left -= static_cast<size_t>(w);
-    }
-    _exit(0);
-  }
-  close(fds[1]);
-  size_t n = 0;
-  std::vector<double> out;
-  if (read(fds[0], &n, sizeof n) == sizeof n) {
-    out.resize(n);
-    char* p = reinterpret_cast<char*>(out.data());
-    for (size_t left = n * sizeof(double); left > 0;) {
-      const ssize_t r = read(fds[0], p, left);
-      if (r <= 0) {
-        out.clear();
-        break;
-      }
-      p += r;
-      left -= static_cast<size_t>(r);
-    }
-  }
-  close(fds[0]);
-  int status = 0;
-  struct rusage usage {};
-  wait4(pid, &status, 0, &usage);
-  *peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;
-  g_child_cpu_s = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
-                  1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) out.clear();
+  ChildUsage usage;
+  std::vector<double> out = RunInChild(work, &usage);
+  *peak_mb = usage.peak_mb;
+  g_child_cpu_s = usage.cpu_s;
   return out;
 }
 

@@ -7,48 +7,12 @@
 #include <utility>
 
 #include "scanners/core/errors.h"
+#include "tests/support/test_meshes.h"
 
 namespace bespoke {
 namespace {
 
-// An icosahedron subdivided `levels` times, vertices projected on the sphere
-// of radius `radius` around the origin (all faces counter-clockwise from outside).
-TriangleMesh Icosphere(double radius, int levels) {
-  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Eigen::Vector3d> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
-                                    {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
-                                    {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  std::vector<Eigen::Vector3i> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                    {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                    {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                    {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-  for (auto& p : v) p.normalize();
-  for (int level = 0; level < levels; ++level) {
-    std::map<std::pair<int, int>, int> midpoint;
-    auto mid = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      auto it = midpoint.find(key);
-      if (it != midpoint.end()) return it->second;
-      v.push_back((v[a] + v[b]).normalized());
-      return midpoint[key] = static_cast<int>(v.size()) - 1;
-    };
-    std::vector<Eigen::Vector3i> next;
-    for (const auto& tri : f) {
-      const int ab = mid(tri[0], tri[1]), bc = mid(tri[1], tri[2]), ca = mid(tri[2], tri[0]);
-      next.push_back({tri[0], ab, ca});
-      next.push_back({tri[1], bc, ab});
-      next.push_back({tri[2], ca, bc});
-      next.push_back({ab, bc, ca});
-    }
-    f = std::move(next);
-  }
-  TriangleMesh mesh;
-  mesh.vertices.resize(static_cast<Eigen::Index>(v.size()), 3);
-  for (std::size_t i = 0; i < v.size(); ++i) mesh.vertices.row(i) = radius * v[i].transpose();
-  mesh.faces.resize(static_cast<Eigen::Index>(f.size()), 3);
-  for (std::size_t i = 0; i < f.size(); ++i) mesh.faces.row(i) = f[i].transpose();
-  return mesh;
-}
+using testing::Icosphere;
 
 // A cylinder of radius r around the z axis, z in [0, height], `sides`
 // vertices per ring and `rings` rings; closed by two fan caps unless `open`.
