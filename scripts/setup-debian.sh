@@ -15,7 +15,7 @@ PACKAGES=(
   # PCD binary_compressed (LZF) in scanners/io
   liblzf-dev
   # tests, benchmarks, fuzzing (libFuzzer ships with clang's runtime)
-  libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
+  libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev clang-format
   # batch: SHA-256 of outputs (done.json); the Slurm job-array test (scripts/slurm)
   libssl-dev slurm-wlm munge
 )
