@@ -41,12 +41,10 @@ BuildInfo MakeBuildInfo() {
   BuildInfo info;
   info.version = OrUnknown(BESPOKE_VERSION);
   info.build_type = OrUnknown(BESPOKE_BUILD_TYPE);
-  info.libraries = {{"pcl", OrUnknown(BESPOKE_PCL_VERSION)},
-                    {"cgal", OrUnknown(BESPOKE_CGAL_VERSION)},
-                    {"open3d", OrUnknown(BESPOKE_OPEN3D_VERSION)},
-                    {"opencv", OrUnknown(BESPOKE_OPENCV_VERSION)},
-                    {"eigen", OrUnknown(BESPOKE_EIGEN_VERSION)},
-                    {"flann", OrUnknown(BESPOKE_FLANN_VERSION)}};
+  info.libraries = {
+      {"pcl", OrUnknown(BESPOKE_PCL_VERSION)},       {"cgal", OrUnknown(BESPOKE_CGAL_VERSION)},
+      {"open3d", OrUnknown(BESPOKE_OPEN3D_VERSION)}, {"opencv", OrUnknown(BESPOKE_OPENCV_VERSION)},
+      {"eigen", OrUnknown(BESPOKE_EIGEN_VERSION)},   {"flann", OrUnknown(BESPOKE_FLANN_VERSION)}};
   return info;
 }
 

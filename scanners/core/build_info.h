@@ -11,7 +11,7 @@
 namespace bespoke {
 
 struct BuildInfo {
-  std::string version;  // Bespoke's own, e.g. "0.1.0"
+  std::string version;     // Bespoke's own, e.g. "0.1.0"
   std::string build_type;  // CMake build type, e.g. "Release"
   // (library, version) in a fixed order: pcl, cgal, open3d, opencv, eigen,
   // flann; "unknown" where the build did not configure the library.
