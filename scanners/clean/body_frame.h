@@ -29,12 +29,12 @@
 //        narrow tip at the front (10 mm from its tip the nose is ~30 mm
 //        wide) and a round one at the back (the occiput, ~75 mm); the cue is
 //        the narrowest back tip minus the narrowest front tip, trusted from
-//        `min_nose_cue_mm`; flag `front_from_nose`. (A first version compared
-//        the head's centre with the neck's: right on the parametric body,
-//        wrong on 6 of 6 MakeHuman bodies, whose neck leans forward.) A body
-//        model without a nose gives no cue. When neither cue is clear the result is
-//        flagged `front_uncertain` (the larger cue still picks the sign).
-//        Cues that disagree are flagged `front_cues_disagree`.
+//        `min_nose_cue_mm`; flag `front_from_nose`. (The head's centre
+//        against the neck's is no cue: MakeHuman bodies' necks lean
+//        forward.) A body model without a nose gives no cue. When neither
+//        cue is clear the result is flagged `front_uncertain` (the larger cue
+//        still picks the sign). Cues that disagree are flagged
+//        `front_cues_disagree`.
 //        Fails for feet hidden by long garments or cut off by the floor band,
 //        feet turned out by 90 degrees, or a scan of the upper body only.
 //  +x    = +y x +z: the person's right.

@@ -11,11 +11,10 @@
 //   largest_cluster    keep the largest Euclidean cluster (scanners/clean/euclidean_clusters.h)
 //   body_frame         body_from_scanner (scanners/clean/body_frame.h; always on)
 //   normals            outward normals (scanners/clean/normals.h)
-// The order differs from the order the issue lists the stages in, for speed
-// at no loss: voxelisation first (a 440k-point scan becomes ~280k points,
-// the outlier tests see a uniform density, and the output spacing is the
-// same since later stages only remove points); the floor next (RANSAC runs
-// on a random subset and does not need clean data; it often holds half the
+// Why this order: voxelisation first (fewer points for everything after it,
+// a uniform density for the outlier tests, and the same output spacing since
+// later stages only remove points); the floor next (RANSAC runs on a random
+// subset and does not need clean data; the floor often holds half the
 // points, which the neighbour search then never sees).
 //
 // Input: a cloud in the scanner frame, millimetres (scanners/io converts the

@@ -19,10 +19,9 @@
 //     closing. Leaks are caught where it matters most: if the flood reaches
 //     a point inside the torso (median x, y of the points 55-65 % up, at
 //     60 % of the height), the closing grows by 10 mm, the probe in
-//     proportion, up to 3 times (a MakeHuman scan with a 40-60 mm hole had a
-//     third of its normals turned in: the inside leaked and the forearms in
-//     front of the chest blocked the outward probe). The closing used is
-//     reported.
+//     proportion, up to 3 times (where the inside leaks, forearms in front of
+//     the chest block the outward probe and whole patches turn inwards). The
+//     closing used is reported.
 //  2. Propagation. Undecided points take the orientation that agrees with
 //     their already-decided neighbours (sum of n_i . n_j over decided
 //     neighbours j), sweep after sweep until nothing changes.

@@ -24,18 +24,18 @@ namespace bespoke {
 
 struct StatisticalOutlierOptions {
   int mean_k = 16;  // neighbours averaged per point. Default 16.
-  // Reject score > median + stddev_mul * 1.4826 * MAD. Default 5: on a 4 mm
-  // voxel grid that rejects scores above ~11.6 mm (median ~7.6 mm), keeping
-  // open scan borders (e.g. the soles' rim, score ~1.4x the median) while a
-  // point 40 mm from any surface scores > 30 mm (docs/cleaning.md).
+  // Reject score > median + stddev_mul * 1.4826 * MAD: high enough to keep
+  // open scan borders (the soles' rim scores above the median), low enough to
+  // drop a point well off any surface. Default 5.
   double stddev_mul = 5.0;
   // Throws InputError unless 1 <= mean_k <= 100 and stddev_mul > 0.
   void Check() const;
 };
 
 struct RadiusOutlierOptions {
-  // Default 15 mm: about 3.5 leaves at the default 4 mm voxel; a point on a
-  // scanned surface has ~40 neighbours there, an isolated stray point none.
+  // Radius of the neighbour count, mm: a few voxel leaves, so a point on a
+  // scanned surface has many neighbours within it and a stray point none.
+  // Default 15 mm.
   double radius_mm = 15.0;
   int min_neighbors = 4;  // other points required within the radius. Default 4.
   // Throws InputError unless radius_mm > 0 and 1 <= min_neighbors <= 100.

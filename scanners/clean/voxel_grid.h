@@ -21,9 +21,8 @@
 namespace bespoke {
 
 struct VoxelGridOptions {
-  // Cube edge, mm. Default 4 mm: a 1.75 m body gives ~120-170k points, the
-  // spacing the later stages are tuned for; girths and geodesics on it lose
-  // well under 0.1 mm to the centroid averaging (docs/cleaning.md).
+  // Cube edge, mm: the output spacing the later stages are tuned for.
+  // Default 4 mm.
   double leaf_mm = 4.0;
   // Throws InputError unless 0.1 <= leaf_mm <= 1000.
   void Check() const;
