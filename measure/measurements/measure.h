@@ -61,7 +61,7 @@ struct MeasureOptions {
   double max_lower_mm = 100;   // default 100 mm: arms "lower" limit
   double uncertain_confidence = 0.5;  // default 0.5: below it a landmark is "uncertain"
   int geodesic_threads = 2;           // default 2: threads for the geodesic lengths (each
-                                      // beyond the first builds its own grid, ~0.3 s CPU)
+                                      // beyond the first builds its own grid)
   bool keep_geometry = true;          // default true: hull loops and paths for rendering
   std::vector<std::string> only;      // default empty = every catalogue measurement
   void Check() const;                 // InputError when out of range

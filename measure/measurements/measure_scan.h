@@ -1,5 +1,5 @@
 // The per-scan glue between cleaning and the measurement files, shared by
-// `bespoke measure`, the batch job's measure step and measure_bench:
+// `bespoke measure` and the batch job's measure step:
 //
 //   FindLandmarks        DetectLandmarks on the cleaned cloud, then the
 //                        tailor's override file (if any) applied on top;
