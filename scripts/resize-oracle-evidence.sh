@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Issue 6's evidence on oracle bodies (docs/resize.md, "20 bodies far from the
-# standard size"): makes N parametric oracle subjects far from the designs'
-# standard size with `bespoke synth-body --truth` (exact reference
-# measurements, no scan), then runs resize_evidence on them.
+# The resize evidence on oracle bodies (docs/resize.md, "Results"): makes N
+# parametric oracle subjects far from the designs' standard size with
+# `bespoke synth-body --truth` (exact reference measurements, no scan), then
+# runs resize_evidence on them.
 #
 #   scripts/resize-oracle-evidence.sh [OUT_DIR]      (default: a new temp dir)
 #   BUILD_DIR (default build)  COUNT (default 20)  EVIDENCE_ARGS (extra resize_evidence options)

@@ -1,4 +1,4 @@
-// Evidence run for issue 6: bodies far from the standard size, each resized
+// Resize evidence: bodies far from the standard size, each resized
 // from the standard-size design and compared with the design drafted directly
 // for that body and with plain proportional grading (eval/resize/evidence.h).
 // Prints a Markdown table and a summary line; exit code 1 when any body
