@@ -28,8 +28,9 @@ CommandRunner SetupRunCommand(CLI::App& app) {
                  "Also fit a pattern: shirt or trousers (default: none)");
   app.add_option("--units", args->job.units,
                  "The scan file's length unit: mm, cm, dm or m (default: guessed from its size)");
-  app.add_option("--landmarks", args->job.landmarks,
-                 "Landmark override JSON (name -> [x, y, z] in the body frame, mm)");
+  app.add_option(
+      "--landmarks", args->job.landmarks,
+      "Landmark override file (JSON name -> [x, y, z]; a measurement or truth document works too)");
   app.add_option("--threads", args->job.threads,
                  "Threads for the parallel stages (default 0 = all CPUs)");
   app.add_option("--scan-id", args->job.scan_id, "Id recorded in done.json (default: file stem)")

@@ -123,7 +123,7 @@ TEST(BatchE2E, DesignFitsAPatternToEveryScan) {
     EXPECT_EQ(record->status, "ok") << id;
     for (const char* f : {"fitted.json", "fitted.svg", "fitted.dxf", "resize_report.json"})
       EXPECT_TRUE(fs::exists(folder / f)) << id << ": " << f;
-    // Every bound measurement met within 1 mm (issue 6's evidence bound).
+    // Every bound measurement met within 1 mm (the resize evidence's bound).
     EXPECT_LE(record->results.value("fit_max_measurement_error_mm", 1e9), 1.0) << id;
     EXPECT_LE(record->results.value("fit_max_seam_mismatch_mm", 1e9), 1.0) << id;
     // The fit's targets are this scan's own measurements (+ the design's ease).
