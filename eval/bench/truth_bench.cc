@@ -1,6 +1,6 @@
 // Speed of the exact reference (Google Benchmark), as ratios within one run:
 // the catalogue's geodesic datum pairs on a body, computed
-//   Whole   - as the reference did before: one CGAL propagation over the
+//   Whole   - the baseline without cropping: one CGAL propagation over the
 //             whole mesh per source point, every pair touching that source
 //             answered from its tree (sources chosen greedily);
 //   Cropped - CroppedExactGeodesics: one propagation per pair on a crop that

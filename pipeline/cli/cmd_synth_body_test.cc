@@ -84,7 +84,7 @@ TEST(SynthBodyCli, ParametricBodyAndDatumPointsOnly) {
               1e-3);
 }
 
-// The issue's "done when", on the built-in body: full truth, then a scan.
+// The oracle end to end on the built-in body: full truth, then a scan.
 TEST(SynthBodyCli, SynthBodyThenScanSimGiveANoisyScanWithHolesAndItsTruth) {
   TempDir dir;
   ProcessResult r = Bespoke(dir, "synth-body --seed 1" + std::string(kLight) + " -o " +
@@ -97,7 +97,7 @@ TEST(SynthBodyCli, SynthBodyThenScanSimGiveANoisyScanWithHolesAndItsTruth) {
   for (const auto& m : truth["measurements"]) {
     EXPECT_GT(m["value_mm"].get<double>(), 0) << m["name"];
     EXPECT_TRUE(m["flags"].empty()) << m["name"] << " " << m["flags"];
-    if (m["kind"] == "girth") {  // against the construction (issue: within 0.5 mm)
+    if (m["kind"] == "girth") {  // against the construction, within 0.5 mm
       const std::string name = m["name"];
       const std::string side =
           Catalogue::Builtin().Measurement(name).side == "right" ? "_right" : "";
