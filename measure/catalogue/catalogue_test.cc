@@ -122,10 +122,10 @@ TEST(Catalogue, MalformedDocumentsAreInputErrors) {
 
 // docs/measurements.md is generated from the catalogue; this fails when it is
 // stale. Regenerate: BESPOKE_UPDATE_DOCS=1 catalogue_tests --gtest_filter=<this>.
+// The path is the source tree's (CMake), so the test finds the doc from any
+// working directory.
 TEST(Catalogue, MarkdownDocIsCurrent) {
-  const std::filesystem::path doc =
-      std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "docs" /
-      "measurements.md";
+  const std::filesystem::path doc = BESPOKE_MEASUREMENTS_DOC;
   const std::string expected = Catalogue::Builtin().ToMarkdown();
   if (const char* update = std::getenv("BESPOKE_UPDATE_DOCS"); update && *update == '1') {
     std::ofstream(doc, std::ios::binary) << expected;
