@@ -31,6 +31,13 @@ void AccuracyRunOptions::Check() const {
   if (model != "parametric" && model != "makehuman") {
     throw InputError("--model must be parametric or makehuman, not '" + model + "'");
   }
+  if (population != "default" && population != "full")
+    throw InputError("--population must be default or full, not '" + population + "'");
+  SynthBodyOptions body;
+  body.model = model;
+  body.population = population;
+  body.posture = posture;
+  body.Check();  // InputError for an unknown posture
   if (pose != "a" && pose != "t" && pose != "both")
     throw InputError("--pose must be a, t or both, not '" + pose + "'");
   if (pose == "t" && model != "parametric") {
@@ -105,6 +112,8 @@ SubjectOutcome RunSubject(const AccuracyRunOptions& options, const SubjectSpec& 
     SynthBodyOptions body_options;
     body_options.model = options.model;
     body_options.seed = spec.seed;
+    body_options.population = options.population;
+    if (spec.name.rfind("posture_", 0) != 0) body_options.posture = options.posture;
     body_options.params = spec.params;
     body_options.makehuman_dir = options.makehuman_dir;
     const Body body = generator.Generate(body_options);
@@ -184,9 +193,11 @@ std::vector<json> ReusableTruths(const AccuracyRunOptions& options) {
   const json set = ReadJsonFile(options.reuse_set / "set.json");
   if (set.value("model", "") != options.model ||
       set.value("seed", std::uint64_t{0}) != options.seed ||
+      set.value("population", std::string("default")) != options.population ||
+      set.value("posture", std::string()) != options.posture ||
       set.value("params", std::vector<std::string>{}) != options.params) {
     throw InputError(options.reuse_set / "set.json",
-                     "made with another model, seed or --param than this run");
+                     "made with another model, seed, population or --param than this run");
   }
   if (!set.value("reference_measurements", false)) {
     throw InputError(options.reuse_set / "set.json",

@@ -40,9 +40,11 @@
 namespace bespoke {
 
 struct AccuracyRunOptions {
-  int subjects = 0;                     // required, 1-1000
-  std::string model = "parametric";     // "parametric" or "makehuman"
-  std::uint64_t seed = 1;               // of the set: subject i uses seed * 1000 + i + 1
+  int subjects = 0;                    // required, 1-1000
+  std::string model = "parametric";    // "parametric" or "makehuman"
+  std::uint64_t seed = 1;              // of the set: subject i uses seed * 1000 + i + 1
+  std::string population = "default";  // "default" or "full" (oracle/synth/synth_body.h)
+  std::string posture;  // every subject's posture (oracle/synth/synth_body.h); "" = the model's
   std::vector<std::string> params;      // "name=value" body parameters for every subject
   std::filesystem::path makehuman_dir;  // default: oracle/synth's DefaultMakeHumanDir()
   std::string pose = "a";  // "a", "t" (parametric only) or "both" (subjects in A + posture test)

@@ -4,6 +4,8 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
+#include <iterator>
 #include <map>
 #include <numeric>
 #include <sstream>
@@ -124,9 +126,13 @@ MeshTopology AnalyzeTopology(const TriangleMesh& mesh) {
   return t;
 }
 
-bool SelfIntersects(const TriangleMesh& mesh) {
-  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+
+// The mesh as a CGAL surface mesh with the same vertex and face indices.
+SurfaceMesh ToSurfaceMesh(const TriangleMesh& mesh) {
   mesh.CheckIndices();
   SurfaceMesh sm;
   std::vector<SurfaceMesh::Vertex_index> index;
@@ -144,7 +150,27 @@ bool SelfIntersects(const TriangleMesh& mesh) {
                        " cannot be added: the mesh is not an oriented 2-manifold");
     }
   }
-  return CGAL::Polygon_mesh_processing::does_self_intersect(sm);
+  return sm;
+}
+
+}  // namespace
+
+bool SelfIntersects(const TriangleMesh& mesh) {
+  return CGAL::Polygon_mesh_processing::does_self_intersect(ToSurfaceMesh(mesh));
+}
+
+std::vector<std::pair<int, int>> SelfIntersectingFacePairs(const TriangleMesh& mesh) {
+  const SurfaceMesh sm = ToSurfaceMesh(mesh);
+  std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> found;
+  CGAL::Polygon_mesh_processing::self_intersections(sm, std::back_inserter(found));
+  std::vector<std::pair<int, int>> pairs;
+  pairs.reserve(found.size());
+  for (const auto& [a, b] : found) {
+    const int i = static_cast<int>(a.idx()), j = static_cast<int>(b.idx());
+    pairs.emplace_back(std::min(i, j), std::max(i, j));
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
 }
 
 }  // namespace bespoke

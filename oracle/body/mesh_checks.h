@@ -10,6 +10,8 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "scanners/core/types.h"
 
@@ -38,6 +40,10 @@ MeshTopology AnalyzeTopology(const TriangleMesh& mesh);
 
 // True when two faces intersect other than along their shared vertices/edges.
 bool SelfIntersects(const TriangleMesh& mesh);
+
+// The pairs of faces (rows of mesh.faces, first < second) that intersect,
+// by the same rule; sorted. Same failures as SelfIntersects.
+std::vector<std::pair<int, int>> SelfIntersectingFacePairs(const TriangleMesh& mesh);
 
 }  // namespace bespoke
 

@@ -98,7 +98,12 @@ struct ParametricBodyOptions {
 
 // The options with the size values drawn for `options.seed` and seed = 0
 // (the draw's seed is kept in `drawn_from_seed`); a copy when seed == 0.
-ParametricBodyOptions SeededOptions(const ParametricBodyOptions& options);
+// `population` "default" draws an everyday spread (stature SD about 65 mm,
+// build SD 10 %); "full" the whole range a shop sees (stature 1450-2050 mm,
+// build 0.65-1.5, belly, hips and bust far from the average combinations),
+// from its own stream of the seed. InputError for another name.
+ParametricBodyOptions SeededOptions(const ParametricBodyOptions& options,
+                                    const std::string& population = "default");
 
 // One girth level built into the body: the ring of mesh vertices that lies
 // exactly in `plane_normal . (x - plane_point) = 0` (up to rounding of the

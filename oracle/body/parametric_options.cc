@@ -159,8 +159,75 @@ ParametricBodyOptions ParametricBodyOptions::AverageMan() {
   return o;
 }
 
-ParametricBodyOptions SeededOptions(const ParametricBodyOptions& options) {
+namespace {
+
+// Keeps the pose and resolution of `from` in `to`.
+void KeepPoseAndResolution(const ParametricBodyOptions& from, ParametricBodyOptions* to) {
+  to->arm_abduction_deg = from.arm_abduction_deg;
+  to->torso_segments = from.torso_segments;
+  to->arm_segments = from.arm_segments;
+  to->ring_spacing_mm = from.ring_spacing_mm;
+  to->girth_ring_segments = from.girth_ring_segments;
+  to->max_girth_deficit_mm = from.max_girth_deficit_mm;
+}
+
+// The "full" population: any stature of 1450-2050 mm, builds from very thin
+// to obese, and belly, hips and bust drawn apart from the build.
+ParametricBodyOptions FullRangeOptions(const ParametricBodyOptions& options) {
+  std::mt19937_64 rng(options.seed * 0xD1B54A32D192ED03ULL + 0x2545F491ULL);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  const auto clipped = [&](double lo, double hi) { return std::clamp(normal(rng), lo, hi); };
+  for (int attempt = 0; attempt < 1000; ++attempt) {
+    const bool man = uniform(rng) < 0.5;
+    ParametricBodyOptions o = man ? ParametricBodyOptions::AverageMan() : ParametricBodyOptions();
+    KeepPoseAndResolution(options, &o);
+    const double stature = std::clamp(o.stature_mm + 100 * normal(rng), 1450.0, 2050.0);
+    const double length_scale = stature / o.stature_mm;
+    const double build = std::clamp(1 + 0.18 * clipped(-2, 2.8), 0.65, 1.5);
+    const double girth_scale = build * std::sqrt(length_scale);
+    const auto jitter = [&](double sd) { return 1 + sd * clipped(-2.5, 2.5); };
+    o.stature_mm = stature;
+    o.arm_length_mm *= length_scale * jitter(0.03);
+    o.crotch_height_mm *= length_scale * jitter(0.03);
+    o.shoulder_width_mm *= std::sqrt(girth_scale) * length_scale * jitter(0.05);
+    o.stance_width_mm *= length_scale;
+    const double belly = jitter(0.12), hips = jitter(0.08);
+    o.neck_girth_mm *= girth_scale * jitter(0.05);
+    o.under_bust_girth_mm *= girth_scale * jitter(0.05);
+    o.chest_girth_mm = o.under_bust_girth_mm * (man ? 1.087 : 1.154) * jitter(0.03);
+    o.bust_girth_mm = man ? o.chest_girth_mm : o.under_bust_girth_mm * (1.2 * jitter(0.08));
+    o.waist_girth_mm *= girth_scale * belly * (build > 1 ? build : 1.0);
+    o.hip_girth_mm *= girth_scale * hips;
+    o.middle_hip_girth_mm =
+        std::max(0.5 * (o.waist_girth_mm + o.hip_girth_mm), o.waist_girth_mm) * jitter(0.02);
+    o.upper_arm_girth_mm *= girth_scale * jitter(0.08);
+    o.wrist_girth_mm *= std::sqrt(girth_scale) * jitter(0.05);
+    o.thigh_girth_mm *= girth_scale * hips * jitter(0.05);
+    o.knee_girth_mm *= std::sqrt(girth_scale) * jitter(0.05);
+    o.calf_girth_mm *= std::sqrt(girth_scale) * jitter(0.06);
+    o.ankle_girth_mm *= std::sqrt(girth_scale) * jitter(0.05);
+    o.seed = 0;
+    o.drawn_from_seed = options.seed;
+    try {
+      o.Check();
+    } catch (const InputError&) {
+      continue;
+    }
+    return o;
+  }
+  throw InternalError("parametric body: no valid full-range draw for seed " +
+                      std::to_string(options.seed));
+}
+
+}  // namespace
+
+ParametricBodyOptions SeededOptions(const ParametricBodyOptions& options,
+                                    const std::string& population) {
+  if (population != "default" && population != "full")
+    throw InputError("parametric body: unknown population '" + population + "' (default, full)");
   if (options.seed == 0) return options;
+  if (population == "full") return FullRangeOptions(options);
   std::mt19937_64 rng(options.seed * 0x9E3779B97F4A7C15ULL + 0x1234567ULL);
   std::normal_distribution<double> normal(0.0, 1.0);
   const auto clipped = [&]() { return std::clamp(normal(rng), -2.2, 2.2); };

@@ -4,33 +4,13 @@
 #include <cmath>
 
 #include "oracle/makehuman/makehuman_landmarks.h"
+#include "oracle/makehuman/makehuman_population.h"
+#include "oracle/makehuman/makehuman_random.h"
+#include "oracle/truth/defined_landmarks.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
 namespace {
-
-// SplitMix64: a small, fully specified generator, so a seed gives the same
-// body with any standard library.
-class Random {
- public:
-  explicit Random(std::uint64_t seed) : state_(seed ^ 0x6a09e667f3bcc909ULL) {}
-  std::uint64_t Next() {
-    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-  double Uniform(double lo, double hi) {
-    return lo + (hi - lo) * static_cast<double>(Next() >> 11) * 0x1.0p-53;
-  }
-  double Normal(double mean, double sd) {  // Box-Muller
-    const double u1 = Uniform(1e-12, 1.0), u2 = Uniform(0.0, 1.0);
-    return mean + sd * std::sqrt(-2 * std::log(u1)) * std::cos(2 * M_PI * u2);
-  }
-
- private:
-  std::uint64_t state_;
-};
 
 void CheckRange(const std::optional<double>& v, const char* name, double lo, double hi) {
   if (v && !(*v >= lo && *v <= hi))
@@ -65,7 +45,7 @@ const std::vector<std::string>& MakeHumanMeasureNames() {
 
 void MakeHumanBodyOptions::Check() const {
   CheckRange(gender, "gender", 0, 1);
-  CheckRange(age_years, "age_years", 25, 90);
+  CheckRange(age_years, "age_years", 18, 90);
   CheckRange(muscle, "muscle", 0, 1);
   CheckRange(weight, "weight", 0, 1);
   CheckRange(proportions, "proportions", 0, 1);
@@ -77,6 +57,11 @@ void MakeHumanBodyOptions::Check() const {
     throw InputError("makehuman: the ethnic weights african, asian, caucasian are all 0");
   if (!(measure_spread >= 0 && measure_spread <= 1))
     throw InputError("makehuman: measure_spread must be in [0, 1]");
+  const auto& populations = MakeHumanPopulationNames();
+  if (std::find(populations.begin(), populations.end(), population) == populations.end())
+    throw InputError("makehuman: unknown population '" + population + "' (default, full)");
+  CheckMakeHumanShape(shape);
+  posture.Check();
   const auto& known = MakeHumanMeasureNames();
   for (const auto& [name, value] : measure) {
     if (std::find(known.begin(), known.end(), name) == known.end())
@@ -96,21 +81,27 @@ void MakeHumanBodyOptions::Set(const std::string& name, double value) {
     *it->second = value;
   } else if (name == "measure_spread") {
     measure_spread = value;
+  } else if (name == "defined_landmarks") {
+    defined_landmarks = value != 0;
   } else if (name == "seed") {
     if (!(value >= 0) || value != std::floor(value)) throw InputError("makehuman: bad seed");
     seed = static_cast<std::uint64_t>(value);
   } else if (name.rfind("measure.", 0) == 0) {
     measure[name.substr(8)] = value;
+  } else if (name.rfind("shape.", 0) == 0) {
+    shape[name.substr(6)] = value;
   } else {
-    throw InputError("makehuman: unknown parameter '" + name +
-                     "' (gender, age_years, muscle, weight, proportions, stature_mm, cup, "
-                     "firmness, african, asian, caucasian, measure_spread, measure.<name>)");
+    throw InputError(
+        "makehuman: unknown parameter '" + name +
+        "' (gender, age_years, muscle, weight, proportions, stature_mm, cup, "
+        "firmness, african, asian, caucasian, measure_spread, measure.<name>, shape.<name>)");
   }
 }
 
 MakeHumanParameters MakeHumanDraw(const MakeHumanBodyOptions& o) {
   o.Check();
-  Random random(o.seed);
+  if (o.population == "full") return MakeHumanDrawFull(o);
+  MakeHumanRandom random(o.seed);
   MakeHumanParameters p;
   // Every draw happens whether or not it is overridden, so overriding one
   // value does not change the others.
@@ -138,6 +129,7 @@ MakeHumanParameters MakeHumanDraw(const MakeHumanBodyOptions& o) {
     const auto it = o.measure.find(name);
     p.measure[name] = it != o.measure.end() ? it->second : drawn;
   }
+  p.shape = o.shape;
   return p;
 }
 
@@ -192,6 +184,7 @@ std::map<std::string, double> MakeHumanTargetWeights(const MakeHumanParameters& 
   }
   for (const auto& [name, value] : p.measure)
     add("measure/measure-" + name + (value > 0 ? "-incr" : "-decr") + ".target", std::abs(value));
+  AddMakeHumanShapeWeights(p.shape, &w);
   return w;
 }
 
@@ -204,8 +197,12 @@ double StatureAt(const Eigen::VectorXd& y0, const Eigen::VectorXd& dy, double h)
 }
 
 // The height weight in [-1, 1] giving `stature_dm`, by bisection on each
-// side (stature is monotone in the weight for these targets).
-double SolveHeightWeight(MakeHumanModel* model, const MakeHumanParameters& p, double stature_dm) {
+// side (stature is monotone in the weight for these targets). Beyond the
+// targets' reach: InputError, or with `clamp` the weight +-1 (and
+// *stature_dm the stature it gives).
+double SolveHeightWeight(MakeHumanModel* model, const MakeHumanParameters& p, double* stature_dm_io,
+                         bool clamp) {
+  const double stature_dm = *stature_dm_io;
   const Eigen::VectorXd y0 = model->Morph(MakeHumanTargetWeights(p, 0)).vertices.col(1);
   const Eigen::VectorXd up = model->Morph(MakeHumanTargetWeights(p, 1)).vertices.col(1) - y0;
   const Eigen::VectorXd down = y0 - model->Morph(MakeHumanTargetWeights(p, -1)).vertices.col(1);
@@ -214,9 +211,14 @@ double SolveHeightWeight(MakeHumanModel* model, const MakeHumanParameters& p, do
   const Eigen::VectorXd& d = taller ? up : down;
   const double sign = taller ? 1 : -1;
   double lo = 0, hi = 1;
-  if ((StatureAt(y0, sign * d, 1) - stature_dm) * sign < 0)
+  if ((StatureAt(y0, sign * d, 1) - stature_dm) * sign < 0) {
+    if (clamp) {
+      *stature_dm_io = StatureAt(y0, sign * d, 1);
+      return sign;
+    }
     throw InputError("makehuman: stature " + std::to_string(stature_dm * 100) +
                      " mm is beyond the height targets' range for these parameters");
+  }
   for (int i = 0; i < 60; ++i) {
     const double mid = 0.5 * (lo + hi);
     if ((StatureAt(y0, sign * d, mid) - stature_dm) * sign < 0)
@@ -248,15 +250,39 @@ SurfacePoint HighestVertex(const TriangleMesh& mesh) {
 }  // namespace
 
 Body GenerateMakeHumanBody(const MakeHumanBodyOptions& options, MakeHumanModel* model) {
-  const MakeHumanParameters p = MakeHumanDraw(options);
-  const double height_weight = SolveHeightWeight(model, p, p.stature_mm / 100);
+  MakeHumanParameters p = MakeHumanDraw(options);
+  double stature_dm = p.stature_mm / 100;
+  const double height_weight =
+      SolveHeightWeight(model, p, &stature_dm, /*clamp=*/!options.stature_mm.has_value());
+  const bool clamped = stature_dm != p.stature_mm / 100;
+  if (clamped) p.stature_mm = stature_dm * 100;
   Body body;
   body.model = "makehuman";
-  body.mesh = model->Morph(MakeHumanTargetWeights(p, height_weight));
-  TransformInPlace(MakeHumanModel::BodyFromMakeHuman(), &body.mesh);
+  const Eigen::MatrixX3d all = model->MorphAll(MakeHumanTargetWeights(p, height_weight));
+  body.mesh.vertices = model->SkinRows(all);
+  body.mesh.faces = model->base_body().faces;
+  const Eigen::Affine3d body_from_mh = MakeHumanModel::BodyFromMakeHuman();
+  TransformInPlace(body_from_mh, &body.mesh);
+  PoseResult pose;
+  if (!options.posture.empty()) {
+    const MakeHumanRig& rig = model->Rig();
+    std::map<std::string, Eigen::Vector3d> joints = RigJoints(rig, all);
+    for (auto& [name, joint] : joints) joint = body_from_mh * joint;
+    pose = PoseMakeHumanSkin(rig, body.mesh, joints, options.posture);
+    body.mesh.vertices = pose.vertices;
+  }
   body.landmarks = MakeHumanLandmarkPoints(body.mesh);
   PlaceOnFloorBetweenAnkles(&body);
   body.landmarks["crown"] = HighestVertex(body.mesh);
+  DefinedLevels levels;
+  if (options.defined_landmarks) {
+    // The mid-sagittal seam: skin vertices on x = 0 of the symmetric base.
+    std::vector<int> seam;
+    const Eigen::MatrixX3d& base = model->base_body().vertices;
+    for (Eigen::Index v = 0; v < base.rows(); ++v)
+      if (std::abs(base(v, 0)) < 1e-5) seam.push_back(static_cast<int>(v));
+    levels = PlaceDefinedLandmarks(DefinedLandmarkOptions(), seam, &body);
+  }
   auto& q = body.parameters;
   q["seed"] = static_cast<double>(options.seed);
   q["gender"] = p.gender, q["age_years"] = p.age_years, q["muscle"] = p.muscle;
@@ -265,6 +291,26 @@ Body GenerateMakeHumanBody(const MakeHumanBodyOptions& options, MakeHumanModel* 
   q["asian"] = p.asian, q["caucasian"] = p.caucasian, q["height_weight"] = height_weight;
   q["measure_spread"] = options.measure_spread;
   for (const auto& [name, value] : p.measure) q["measure." + name] = value;
+  for (const auto& [name, value] : p.shape) q["shape." + name] = value;
+  if (options.population == "full") {
+    q["population_full"] = 1;
+    q["hard_case"] = p.hard_case;
+  }
+  if (clamped) q["stature_clamped"] = 1;
+  q["defined_landmarks"] = options.defined_landmarks ? 1 : 0;
+  if (options.defined_landmarks) {
+    q["level.hip_mm"] = levels.hip_mm, q["level.waist_mm"] = levels.waist_mm;
+    q["level.middle_hip_mm"] = levels.middle_hip_mm;
+    q["level.under_bust_mm"] = levels.under_bust_mm;
+    q["level.calf_right_mm"] = levels.calf_right_mm, q["level.calf_left_mm"] = levels.calf_left_mm;
+  }
+  if (!options.posture.empty()) {
+    for (const auto& [name, value] : pose.reached) q["pose." + name] = value;
+    for (const auto& [name, value] : pose.rest) q["pose.rest_" + name] = value;
+    q["pose.new_self_intersections"] = pose.new_self_intersections;
+    q["pose.arms_stopped_at_contact"] = pose.arms_stopped ? 1 : 0;
+    q["pose.legs_stopped_at_contact"] = pose.legs_stopped ? 1 : 0;
+  }
   return body;
 }
 

@@ -34,16 +34,20 @@
 
 #include "oracle/body/body.h"
 #include "oracle/makehuman/makehuman_model.h"
+#include "oracle/makehuman/makehuman_pose.h"
 
 namespace bespoke {
 
 struct MakeHumanBodyOptions {
   // Seed of the draws (any value; the same seed gives the same body).
   std::uint64_t seed = 1;
+  // Population the draws come from: "default" (MakeHumanDraw's ranges) or
+  // "full" (the whole range, hard cases included; makehuman_population.h).
+  std::string population = "default";
   // Values left empty are drawn from the seed (ranges in MakeHumanDraw below);
   // set ones override the draw.
   std::optional<double> gender;                     // 0 female .. 1 male
-  std::optional<double> age_years;                  // 25 .. 90
+  std::optional<double> age_years;                  // 18 .. 90 (targets: 25 and 90)
   std::optional<double> muscle;                     // 0 .. 1
   std::optional<double> weight;                     // 0 .. 1
   std::optional<double> proportions;                // 0 .. 1
@@ -55,11 +59,23 @@ struct MakeHumanBodyOptions {
   // each in [-1, 1]; names not set are drawn from [-measure_spread, measure_spread].
   std::map<std::string, double> measure;
   double measure_spread = 0.3;  // default 0.3; 0 disables the measure draws
+  // Shape targets by name (makehuman_population.h: "stomach-pregnant",
+  // "bodyshape.fem-apple", ...), each in [-1, 1] (body shapes 0 .. 1); names
+  // not set are drawn by the "full" population, 0 in the default one.
+  std::map<std::string, double> shape;
+  // The posture (makehuman_pose.h); empty: MakeHuman's rest pose.
+  MakeHumanPosture posture;
+  // true (default): the datum points the catalogue defines by a level or an
+  // extreme (waist, hip, middle hip, under-bust, crotch, calf) are placed by
+  // that definition on the (posed) mesh (oracle/truth/defined_landmarks.h);
+  // false: every point is the fixed vertex of the table.
+  bool defined_landmarks = true;
 
   // InputError naming the value when one is out of range.
   void Check() const;
   // Sets a value by name: the fields above ("gender", "age_years", ...,
-  // "measure_spread") or "measure.<name>" (e.g. "measure.waist-circ").
+  // "measure_spread"), "measure.<name>" (e.g. "measure.waist-circ") or
+  // "shape.<name>" (e.g. "shape.stomach-pregnant").
   // InputError for unknown names. Lets the CLI take --param name=value.
   void Set(const std::string& name, double value);
 };
@@ -74,6 +90,8 @@ struct MakeHumanParameters {
   double stature_mm = 1650, cup = 0.5, firmness = 0.5;
   double african = 1.0 / 3, asian = 1.0 / 3, caucasian = 1.0 / 3;
   std::map<std::string, double> measure;
+  std::map<std::string, double> shape;  // shape targets (makehuman_population.h)
+  int hard_case = 0;                    // 0 none, else 1 + index in MakeHumanHardCases()
 };
 MakeHumanParameters MakeHumanDraw(const MakeHumanBodyOptions& options);
 
@@ -82,11 +100,17 @@ MakeHumanParameters MakeHumanDraw(const MakeHumanBodyOptions& options);
 std::map<std::string, double> MakeHumanTargetWeights(const MakeHumanParameters& parameters,
                                                      double height_weight);
 
-// Generates the body: model "makehuman", landmarks from the fixed table
+// Generates the body: model "makehuman", posed by options.posture (the
+// datum points move with the skin: they are surface points of the same
+// topology), landmarks from the fixed table
 // (except the crown: the body's highest vertex, so stature = crown height),
-// parameters = every value used (and "seed", "height_weight").
-// InputError for bad options, a stature the height targets cannot reach
-// (beyond weight +-1), or missing/malformed data.
+// parameters = every value used (and "seed", "height_weight",
+// "stature_clamped" = 1 when a drawn stature was beyond the height targets'
+// reach and the nearest reachable one was used; "pose.<quantity>" reached
+// and "pose.rest_<quantity>" of the rest pose, "pose.new_self_intersections",
+// "pose.arms_stopped_at_contact", "pose.legs_stopped_at_contact" when posed).
+// InputError for bad options, a stature set in the options that the height
+// targets cannot reach (beyond weight +-1), or missing/malformed data.
 Body GenerateMakeHumanBody(const MakeHumanBodyOptions& options, MakeHumanModel* model);
 
 }  // namespace bespoke

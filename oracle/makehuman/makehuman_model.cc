@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <unordered_map>
 
+#include "oracle/makehuman/makehuman_pose.h"
 #include "scanners/core/errors.h"
 #include "scanners/io/scan_io.h"
 
@@ -103,8 +104,7 @@ TriangleMesh MakeHumanModel::Morph(const std::map<std::string, double>& weights)
   return MorphWithJoints(weights).body;
 }
 
-MakeHumanModel::Morphed MakeHumanModel::MorphWithJoints(
-    const std::map<std::string, double>& weights) {
+Eigen::MatrixX3d MakeHumanModel::MorphAll(const std::map<std::string, double>& weights) {
   Eigen::MatrixX3d all = base_vertices_;
   for (const auto& [name, weight] : weights) {
     if (weight == 0) continue;
@@ -112,17 +112,35 @@ MakeHumanModel::Morphed MakeHumanModel::MorphWithJoints(
     for (std::size_t i = 0; i < target.vertex.size(); ++i)
       all.row(target.vertex[i]) += weight * target.offset.row(static_cast<Eigen::Index>(i));
   }
+  return all;
+}
+
+Eigen::MatrixX3d MakeHumanModel::SkinRows(const Eigen::MatrixX3d& all) const {
+  Eigen::MatrixX3d skin(static_cast<Eigen::Index>(base_index_.size()), 3);
+  for (std::size_t i = 0; i < base_index_.size(); ++i)
+    skin.row(static_cast<Eigen::Index>(i)) = all.row(base_index_[i]);
+  return skin;
+}
+
+MakeHumanModel::Morphed MakeHumanModel::MorphWithJoints(
+    const std::map<std::string, double>& weights) {
+  const Eigen::MatrixX3d all = MorphAll(weights);
   Morphed out;
   out.body.faces = body_.faces;
-  out.body.vertices.resize(body_.vertices.rows(), 3);
-  for (std::size_t i = 0; i < base_index_.size(); ++i)
-    out.body.vertices.row(static_cast<Eigen::Index>(i)) = all.row(base_index_[i]);
+  out.body.vertices = SkinRows(all);
   for (const auto& [name, list] : joints_) {
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
     for (const int v : list) centre += all.row(v).transpose();
     out.joints[name] = centre / static_cast<double>(list.size());
   }
   return out;
+}
+
+MakeHumanModel::~MakeHumanModel() = default;
+
+const MakeHumanRig& MakeHumanModel::Rig() {
+  if (!rig_) rig_ = std::make_unique<MakeHumanRig>(LoadMakeHumanRig(dir_ / "rig", *this));
+  return *rig_;
 }
 
 Eigen::Affine3d MakeHumanModel::BodyFromMakeHuman() {

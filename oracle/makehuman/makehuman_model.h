@@ -32,11 +32,14 @@
 
 namespace bespoke {
 
+struct MakeHumanRig;
+
 class MakeHumanModel {
  public:
   // `dir` holds base.obj and targets/. Throws InputError for a missing or
   // malformed base.obj, a missing `body` group, an open or non-manifold body.
   explicit MakeHumanModel(const std::filesystem::path& dir);
+  ~MakeHumanModel();
 
   const std::filesystem::path& dir() const { return dir_; }
   // The skin only: #V x 3 decimetres (MakeHuman axes), #F x 3 triangles.
@@ -65,8 +68,18 @@ class MakeHumanModel {
   };
   Morphed MorphWithJoints(const std::map<std::string, double>& weights);
   const std::map<std::string, std::vector<int>>& joint_vertices() const { return joints_; }
+  // Every base.obj vertex morphed (#base vertices x 3, MakeHuman units and
+  // axes): the skeleton's joints are means of such vertices, helper
+  // geometry included.
+  Eigen::MatrixX3d MorphAll(const std::map<std::string, double>& weights);
+  // The skin's rows of MorphAll's result (#V x 3).
+  Eigen::MatrixX3d SkinRows(const Eigen::MatrixX3d& all) const;
 
   static Eigen::Affine3d BodyFromMakeHuman();
+
+  // The default skeleton and skin weights from <dir>/rig (makehuman_pose.h),
+  // read on first use. InputError when missing or malformed.
+  const MakeHumanRig& Rig();
 
  private:
   std::filesystem::path dir_;
@@ -77,6 +90,7 @@ class MakeHumanModel {
   Eigen::MatrixX3d base_vertices_;                  // all of base.obj's vertices
   std::map<std::string, std::vector<int>> joints_;  // joint group -> base.obj vertices
   std::map<std::string, MakeHumanTarget> cache_;
+  std::unique_ptr<MakeHumanRig> rig_;
 };
 
 }  // namespace bespoke

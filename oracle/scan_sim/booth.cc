@@ -80,4 +80,44 @@ std::vector<DepthSensor> MakeBooth(const BoothOptions& o) {
   return sensors;
 }
 
+const std::vector<std::string>& BoothPresetNames() {
+  static const std::vector<std::string> names = {"default", "sparse", "sparse-3", "60k",
+                                                 "120k",    "250k",   "500k"};
+  return names;
+}
+
+BoothOptions BoothPreset(const std::string& name) {
+  BoothOptions o;
+  // Depth image of the 6 x 7 layout for about `points` points of an adult:
+  // the count grows with the pixel count (327k body points at 240 x 180).
+  const auto density = [&o](double points) {
+    const double scale = std::sqrt(points / 390e3);
+    o.width_px = static_cast<int>(std::lround(240 * scale));
+    o.height_px = static_cast<int>(std::lround(180 * scale));
+  };
+  if (name == "default") {
+  } else if (name == "sparse") {
+    o.directions = 4;
+    o.heights = 4;
+  } else if (name == "sparse-3") {
+    o.directions = 3;
+    o.heights = 3;
+    o.width_px = 320;
+    o.height_px = 240;
+  } else if (name == "60k") {
+    density(60e3);
+  } else if (name == "120k") {
+    density(120e3);
+  } else if (name == "250k") {
+    density(250e3);
+  } else if (name == "500k") {
+    density(500e3);
+  } else {
+    std::string known;
+    for (const std::string& n : BoothPresetNames()) known += (known.empty() ? "" : ", ") + n;
+    throw InputError("unknown booth '" + name + "' (known: " + known + ")");
+  }
+  return o;
+}
+
 }  // namespace bespoke

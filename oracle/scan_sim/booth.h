@@ -10,6 +10,7 @@
 #ifndef BESPOKE_ORACLE_SCAN_SIM_BOOTH_H_
 #define BESPOKE_ORACLE_SCAN_SIM_BOOTH_H_
 
+#include <string>
 #include <vector>
 
 #include "scanners/core/types.h"
@@ -48,6 +49,18 @@ struct DepthSensor {
 };
 
 std::vector<DepthSensor> MakeBooth(const BoothOptions& options);
+
+// Named booths (docs/oracle.md lists their point counts):
+//   "default"    6 x 7 sensors, 240 x 180 px (the defaults above);
+//   "sparse"     4 columns x 4 heights at 240 x 180 px: bigger holes under
+//                the arms, between the legs and on the sides;
+//   "sparse-3"   3 columns x 3 heights at 320 x 240 px: a three-tower booth,
+//                the biggest holes;
+//   "60k", "120k", "250k", "500k": the default 6 x 7 layout with the depth
+//                images scaled so an adult gives about that many points.
+// InputError naming the known presets for another name.
+BoothOptions BoothPreset(const std::string& name);
+const std::vector<std::string>& BoothPresetNames();
 
 }  // namespace bespoke
 

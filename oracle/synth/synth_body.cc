@@ -6,6 +6,7 @@
 #include "oracle/body/parametric_body.h"
 #include "oracle/makehuman/makehuman_body.h"
 #include "oracle/makehuman/makehuman_model.h"
+#include "oracle/makehuman/makehuman_pose.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
@@ -14,8 +15,27 @@ void SynthBodyOptions::Check() const {
   if (model != "parametric" && model != "makehuman") {
     throw InputError("body model must be parametric or makehuman, not '" + model + "'");
   }
+  if (population != "default" && population != "full")
+    throw InputError("population must be default or full, not '" + population + "'");
   for (const std::string& p : params) ParseNamedValue(p);
+  if (!posture.empty()) ParseMakeHumanPosture(posture);
 }
+
+namespace {
+
+// A posture on the parametric body: its arm abduction and stance; what it
+// cannot build is an InputError.
+void ApplyParametricPosture(const std::string& name, ParametricBodyOptions* p) {
+  const MakeHumanPosture posture = ParseMakeHumanPosture(name);
+  if (posture.lean_deg != 0 || posture.twist_deg != 0 || posture.head_turn_deg != 0)
+    throw InputError("posture '" + name +
+                     "': the parametric body has no lean, twist or head turn; use --model "
+                     "makehuman");
+  if (posture.arm_abduction_deg) p->arm_abduction_deg = *posture.arm_abduction_deg;
+  if (posture.stance_mm) p->stance_width_mm = *posture.stance_mm;
+}
+
+}  // namespace
 
 std::filesystem::path DefaultMakeHumanDir() {
   const char* env = std::getenv("BESPOKE_SHARED_DIR");
@@ -47,11 +67,12 @@ Body SynthBodyGenerator::Generate(const SynthBodyOptions& options) {
   if (options.model == "parametric") {
     ParametricBodyOptions p;
     p.seed = options.seed;
-    p = SeededOptions(p);
+    p = SeededOptions(p, options.population);
     for (const std::string& kv : options.params) {
       const auto [name, value] = ParseNamedValue(kv);
       p.Set(name, value);
     }
+    if (!options.posture.empty()) ApplyParametricPosture(options.posture, &p);
     p.Check();
     return GenerateParametricBody(p);
   }
@@ -68,6 +89,8 @@ Body SynthBodyGenerator::Generate(const SynthBodyOptions& options) {
   }
   MakeHumanBodyOptions mh;
   mh.seed = options.seed;
+  mh.population = options.population;
+  if (!options.posture.empty()) mh.posture = ParseMakeHumanPosture(options.posture);
   for (const std::string& kv : options.params) {
     const auto [name, value] = ParseNamedValue(kv);
     mh.Set(name, value);

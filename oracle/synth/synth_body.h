@@ -4,13 +4,14 @@
 //
 //   model "parametric": the built-in body (oracle/body/parametric_body.h);
 //     seed 0 is the average body, seed N > 0 draws sex, stature, build and
-//     proportions (SeededOptions); `params` then override single sizes by
+//     proportions (SeededOptions, from `population`); `params` then override single sizes by
 //     field name (ParametricBodyOptions::Set, e.g. "waist_girth_mm",
 //     "arm_angle_deg").
 //   model "makehuman": MakeHuman CC0 data from `makehuman_dir` (default
 //     $BESPOKE_SHARED_DIR/data/bodies/makehuman, else ../shared/...);
 //     `params` by MakeHumanBodyOptions::Set name ("gender", "weight",
-//     "measure.waist-circ", ...).
+//     "measure.waist-circ", "shape.stomach-pregnant", ...); `population`
+//     as MakeHumanBodyOptions::population.
 // Output: a Body in the body frame (mm) with its datum points.
 // Failure: InputError for an unknown model, a malformed "name=value", an
 // unknown parameter name or value out of range, or missing MakeHuman data.
@@ -31,11 +32,17 @@ namespace bespoke {
 class MakeHumanModel;
 
 struct SynthBodyOptions {
-  std::string model = "parametric";     // default "parametric"; or "makehuman"
-  std::uint64_t seed = 1;               // default 1
+  std::string model = "parametric";    // default "parametric"; or "makehuman"
+  std::uint64_t seed = 1;              // default 1
+  std::string population = "default";  // "default" (everyday spread) or "full" (whole range)
+  // Posture name (oracle/makehuman/makehuman_pose.h, e.g. "arms-5",
+  // "arms-30+feet-40"); "" = the model's own pose. The parametric body takes
+  // the arm and feet postures within its range (arms 15-90 deg).
+  std::string posture;
   std::vector<std::string> params;      // "name=value" strings, applied after the seeded draw
   std::filesystem::path makehuman_dir;  // default empty = DefaultMakeHumanDir()
-  void Check() const;                   // InputError for an unknown model or malformed param
+  // InputError for an unknown model or population, or a malformed param.
+  void Check() const;
 };
 
 // $BESPOKE_SHARED_DIR/data/bodies/makehuman, or ../shared/data/bodies/makehuman.

@@ -8,6 +8,7 @@
 #include "pipeline/batch/scan_step_resize.h"
 #include "scanners/clean/clean.h"
 #include "scanners/clean/clean_json.h"
+#include "scanners/clean/mesh_sampling.h"
 #include "scanners/core/json_io.h"
 #include "scanners/core/units.h"
 #include "scanners/io/scan_io.h"
@@ -18,7 +19,7 @@ namespace {
 void Read(JobState& s) {
   ReadOptions options;
   if (!s.options->units.empty()) options.units = ParseLengthUnit(s.options->units);
-  Scan scan = ReadScan(options, s.scan_file);
+  Scan scan = ReadScanSamplingMeshes(options, MeshSamplingOptions(), s.scan_file);
   const ReadReport& r = scan.report;
   s.SetResult("file_format", ToString(r.format));
   s.SetResult("file_unit", ToString(r.unit));

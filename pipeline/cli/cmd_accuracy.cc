@@ -98,6 +98,11 @@ CommandRunner SetupAccuracyCommand(CLI::App& app) {
                  "Body model: parametric (built in) or makehuman (needs ../shared)");
   app.add_option("--seed", r.seed,
                  "Seed of the set (subject i uses seed * 1000 + i + 1, as synth-set)");
+  app.add_option("--population", r.population,
+                 "Population of the subjects: default or full (the whole range, hard cases)");
+  app.add_option("--posture", r.posture,
+                 "Posture of every subject: rest, arms-5|15|30|45|90, feet-together, feet-40, "
+                 "lean-5, twist-5, head-turn, joined with + (default: the model's own)");
   app.add_option("--param", r.params,
                  "Body size or model value for every subject, name=value (repeatable)");
   app.add_option("--makehuman-dir", r.makehuman_dir,
@@ -108,10 +113,12 @@ CommandRunner SetupAccuracyCommand(CLI::App& app) {
                  "Fraction of outlier points in each scan (default 0.02)");
   app.add_option("--transform", o->scanner.transform,
                  "Scanner frame: none, random (rigid) or y-up (default none)");
+  app.add_option("--booth", o->scanner.booth,
+                 "Named booth: default, sparse, sparse-3, 60k, 120k, 250k, 500k (default default)");
   app.add_option("--sensors", o->scanner.sensors,
-                 "Booth: DIRECTIONSxHEIGHTS sensors (default 6x7)");
+                 "DIRECTIONSxHEIGHTS sensors (default: the booth's, 6x7)");
   app.add_option("--resolution", o->scanner.resolution,
-                 "Depth image per sensor, WIDTHxHEIGHT px (default 240x180)");
+                 "Depth image per sensor, WIDTHxHEIGHT px (default: the booth's, 240x180)");
   app.add_option("--pose", o->pose,
                  "a (A-pose), t (T-pose, parametric) or both (A-pose subjects + the posture test); "
                  "default both for parametric, a for makehuman");
@@ -139,6 +146,8 @@ CommandRunner SetupAccuracyCommand(CLI::App& app) {
     nlohmann::json settings = {{"command", "bespoke accuracy"},
                                {"subjects", run.subjects},
                                {"model", run.model},
+                               {"population", run.population},
+                               {"posture", run.posture},
                                {"seed", run.seed},
                                {"params", run.params},
                                {"pose", run.pose},
@@ -147,6 +156,7 @@ CommandRunner SetupAccuracyCommand(CLI::App& app) {
                                {"noise_mm", o->scanner.noise_mm},
                                {"outliers", o->scanner.outliers},
                                {"transform", o->scanner.transform},
+                               {"booth", o->scanner.booth},
                                {"sensors", o->scanner.sensors},
                                {"resolution", o->scanner.resolution},
                                {"jobs", run.jobs},

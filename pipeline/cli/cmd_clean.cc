@@ -1,6 +1,7 @@
 // `bespoke clean SCAN -o OUT.ply [--report REPORT.json] [--units mm|cm|dm|m]
 //  [stage options] [--no-<stage>]`: reads a scan (ReadScan: any supported
-// format, unit given or guessed, NaN/Inf dropped), runs the cleaning chain
+// format, unit given or guessed, NaN/Inf dropped; a mesh sampled over its
+// faces, scanners/clean/mesh_sampling.h), runs the cleaning chain
 // (scanners/clean/clean.h), prints a table of per-stage point counts and wall
 // times, and writes the cleaned cloud in the body frame (mm; PLY with
 // normals by default, or .pcd / .xyz) and, with --report, a JSON report: the
@@ -21,6 +22,7 @@
 #include "pipeline/cli/progress_bar.h"
 #include "scanners/clean/clean.h"
 #include "scanners/clean/clean_json.h"
+#include "scanners/clean/mesh_sampling.h"
 #include "scanners/core/errors.h"
 #include "scanners/core/json_io.h"
 #include "scanners/io/scan_io.h"
@@ -145,7 +147,7 @@ int Run(CleanCommandOptions& o, const GlobalOptions& global) {
   auto start = std::chrono::steady_clock::now();
   ReadOptions read;
   if (!o.units.empty()) read.units = ParseLengthUnit(o.units);
-  Scan scan = ReadScan(read, o.scan);
+  Scan scan = ReadScanSamplingMeshes(read, MeshSamplingOptions(), o.scan);
   const double read_s = Seconds(start);
   for (const std::string& w : scan.report.warnings) spdlog::warn("{}: {}", o.scan.string(), w);
 

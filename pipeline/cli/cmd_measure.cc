@@ -1,7 +1,8 @@
 // `bespoke measure SCAN -o MEAS.json [--csv MEAS.csv] [--vit MEAS.vit]
 //  [--freesewing FS.json] [--landmarks OVERRIDE.json] [--render OUT.png]
 //  [--units mm|cm|dm|m] [--geometry] [--threads N]`
-// Reads a scan (any supported format, unit given or guessed), cleans it into
+// Reads a scan (any supported format, unit given or guessed; a mesh is
+// sampled over its faces, scanners/clean/mesh_sampling.h), cleans it into
 // the body frame (scanners/clean), finds the datum points (measure/landmarks;
 // the override file's points replace or add to them), takes every catalogue
 // measurement (measure/measurements) and writes the measurement document
@@ -25,6 +26,7 @@
 #include "pipeline/cli/progress_bar.h"
 #include "scanners/clean/clean.h"
 #include "scanners/clean/clean_json.h"
+#include "scanners/clean/mesh_sampling.h"
 #include "scanners/core/errors.h"
 #include "scanners/core/json_io.h"
 #include "scanners/core/units.h"
@@ -98,7 +100,7 @@ int Run(MeasureCommandOptions& o, const GlobalOptions& global) {
   Clock read_clock;
   ReadOptions read;
   if (!o.units.empty()) read.units = ParseLengthUnit(o.units);
-  Scan scan = ReadScan(read, o.scan);
+  Scan scan = ReadScanSamplingMeshes(read, MeshSamplingOptions(), o.scan);
   stages.push_back(read_clock.Stop("read"));
   for (const std::string& w : scan.report.warnings) spdlog::warn("{}: {}", o.scan.string(), w);
   const std::size_t points_read = static_cast<std::size_t>(scan.cloud.size());

@@ -1,4 +1,5 @@
-// `bespoke synth-body [--model parametric|makehuman] --seed N [--param k=v ...]
+// `bespoke synth-body [--model parametric|makehuman] --seed N [--population default|full]
+//  [--param k=v ...]
 //  -o BODY.obj [--truth TRUTH.json] [--skip-reference] [--makehuman-dir D]`
 // One test subject's body (oracle/synth/synth_body.h): the mesh in the
 // body frame (mm) and, with --truth, its datum points and exact reference
@@ -49,6 +50,11 @@ CommandRunner SetupSynthBodyCommand(CLI::App& app) {
   app.add_option("--model", o->body.model,
                  "Body model: parametric (built in, default) or makehuman (needs ../shared)");
   app.add_option("--seed", o->body.seed, "Seed (parametric: 0 = the average body; default 1)");
+  app.add_option("--population", o->body.population,
+                 "Population of the seeded draw: default or full (the whole range, hard cases)");
+  app.add_option("--posture", o->body.posture,
+                 "Posture: rest, arms-5|15|30|45|90, feet-together, feet-40, lean-5, twist-5, "
+                 "head-turn, joined with + (default: the model's own)");
   app.add_option("--param", o->body.params,
                  "A size or model value after the seeded draw, name=value (repeatable)");
   app.add_option("--makehuman-dir", o->body.makehuman_dir,

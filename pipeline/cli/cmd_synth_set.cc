@@ -1,4 +1,5 @@
 // `bespoke synth-set --count N --seed S -o DIR [--model parametric|makehuman]
+//  [--population default|full]
 //  [--makehuman-dir D] [--preview PNG] [--preview-count K] [--param k=v ...]
 //  [--skip-reference]
 //  + the scanner options (pipeline/cli/scan_sim_cli.h)`
@@ -36,9 +37,11 @@ namespace bespoke {
 namespace {
 
 struct SynthSetOptions {
-  int count = 0;                     // --count (required, 1-10000)
-  std::uint64_t seed = 1;            // --seed of the set
-  std::string model = "parametric";  // --model parametric|makehuman
+  int count = 0;                       // --count (required, 1-10000)
+  std::uint64_t seed = 1;              // --seed of the set
+  std::string model = "parametric";    // --model parametric|makehuman
+  std::string population = "default";  // --population default|full
+  std::string posture;                 // --posture NAME ("" = the model's own)
   std::filesystem::path
       makehuman_dir;             // default $BESPOKE_SHARED_DIR or ../shared, /data/bodies/makehuman
   std::filesystem::path output;  // -o DIR (required)
@@ -93,6 +96,11 @@ CommandRunner SetupSynthSetCommand(CLI::App& app) {
   app.add_option("--seed", o->seed, "Seed of the set (subject i uses seed * 1000 + i + 1)");
   app.add_option("--model", o->model,
                  "Body model: parametric (built in) or makehuman (needs ../shared)");
+  app.add_option("--population", o->population,
+                 "Population of the draws: default or full (the whole range, hard cases)");
+  app.add_option("--posture", o->posture,
+                 "Posture of every subject: rest, arms-5|15|30|45|90, feet-together, feet-40, "
+                 "lean-5, twist-5, head-turn, joined with + (default: the model's own)");
   app.add_option("--makehuman-dir", o->makehuman_dir,
                  "MakeHuman data (default ../shared/data/bodies/makehuman)");
   app.add_option("-o,--output", o->output, "Folder to fill (created if missing)")->required();
@@ -122,6 +130,8 @@ CommandRunner SetupSynthSetCommand(CLI::App& app) {
       SynthBodyOptions body_options;
       body_options.model = o->model;
       body_options.seed = seed;
+      body_options.population = o->population;
+      body_options.posture = o->posture;
       body_options.params = o->params;
       body_options.makehuman_dir = o->makehuman_dir;
       const Body body = generator.Generate(body_options);
@@ -159,7 +169,8 @@ CommandRunner SetupSynthSetCommand(CLI::App& app) {
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    nlohmann::json scanner = {{"sensors", o->scanner.sensors},
+    nlohmann::json scanner = {{"booth", o->scanner.booth},
+                              {"sensors", o->scanner.sensors},
                               {"resolution", o->scanner.resolution},
                               {"noise_mm", o->scanner.noise_mm},
                               {"outliers", o->scanner.outliers},
@@ -172,6 +183,8 @@ CommandRunner SetupSynthSetCommand(CLI::App& app) {
     WriteJsonFile(o->output / "set.json", {{"format", "bespoke-synth-set"},
                                            {"version", 1},
                                            {"model", o->model},
+                                           {"population", o->population},
+                                           {"posture", o->posture},
                                            {"seed", o->seed},
                                            {"count", o->count},
                                            {"params", o->params},

@@ -32,12 +32,17 @@ ScanSimOptions ScanSimCli::ToOptions() const {
   ScanSimOptions o;
   o.seed = seed;
   o.noise_sigma_mm = noise_mm;
-  const auto [directions, heights] = ParsePair(sensors, "--sensors", true);
-  o.booth.directions = directions;
-  o.booth.heights = heights;
-  const auto [width, height] = ParsePair(resolution, "--resolution", false);
-  o.booth.width_px = width;
-  o.booth.height_px = height;
+  o.booth = BoothPreset(booth);
+  if (!sensors.empty()) {
+    const auto [directions, heights] = ParsePair(sensors, "--sensors", true);
+    o.booth.directions = directions;
+    o.booth.heights = heights;
+  }
+  if (!resolution.empty()) {
+    const auto [width, height] = ParsePair(resolution, "--resolution", false);
+    o.booth.width_px = width;
+    o.booth.height_px = height;
+  }
   o.outlier_fraction = outliers;
   o.floor = floor;
   o.stray_objects = stray_objects;
@@ -57,10 +62,12 @@ void AddScanSimOptions(CLI::App& app, ScanSimCli* cli, bool seed_option) {
   if (seed_option)
     app.add_option("--seed", cli->seed, "Seed of everything random in the scan (default 1)");
   app.add_option("--noise-mm", cli->noise_mm, "Range noise SD along each ray, mm (default 1)");
+  app.add_option("--booth", cli->booth,
+                 "Named booth: default, sparse, sparse-3, 60k, 120k, 250k, 500k (default default)");
   app.add_option("--sensors", cli->sensors,
-                 "Booth: DIRECTIONSxHEIGHTS sensors, or N columns of 1 (default 6x7)");
+                 "DIRECTIONSxHEIGHTS sensors, or N columns of 1 (default: the booth's, 6x7)");
   app.add_option("--resolution", cli->resolution,
-                 "Depth image per sensor, WIDTHxHEIGHT px (default 240x180)");
+                 "Depth image per sensor, WIDTHxHEIGHT px (default: the booth's, 240x180)");
   app.add_option("--outliers", cli->outliers,
                  "Fraction of outlier points in the output (default 0.02)");
   app.add_flag("--floor,!--no-floor", cli->floor,

@@ -17,19 +17,20 @@ class App;
 namespace bespoke {
 
 struct ScanSimCli {
-  std::uint64_t seed = 1;       // --seed
-  double noise_mm = 1.0;        // --noise-mm
-  std::string sensors = "6x7";  // --sensors DIRECTIONSxHEIGHTS, or N (N directions x 1 height)
-  std::string resolution = "240x180";  // --resolution WIDTHxHEIGHT pixels per sensor
-  double outliers = 0.02;              // --outliers (fraction of the output)
-  bool floor = true;                   // --floor / --no-floor
-  int stray_objects = 0;               // --stray-objects
-  std::string transform = "none";      // --transform none|random|y-up
-  std::string units = "m";             // --units m|mm (of the written scan)
-  double misalign_mm = 0;              // --misalign-mm
-  double misalign_deg = 0;             // --misalign-deg
-  bool pcd = false;                    // --pcd
-  bool labels = false;                 // --labels
+  std::uint64_t seed = 1;          // --seed
+  double noise_mm = 1.0;           // --noise-mm
+  std::string booth = "default";   // --booth NAME (oracle/scan_sim/booth.h BoothPreset)
+  std::string sensors;             // --sensors DIRECTIONSxHEIGHTS, or N (N x 1); "" = the booth's
+  std::string resolution;          // --resolution WIDTHxHEIGHT pixels per sensor; "" = the booth's
+  double outliers = 0.02;          // --outliers (fraction of the output)
+  bool floor = true;               // --floor / --no-floor
+  int stray_objects = 0;           // --stray-objects
+  std::string transform = "none";  // --transform none|random|y-up
+  std::string units = "m";         // --units m|mm (of the written scan)
+  double misalign_mm = 0;          // --misalign-mm
+  double misalign_deg = 0;         // --misalign-deg
+  bool pcd = false;                // --pcd
+  bool labels = false;             // --labels
   // Throws InputError naming the option when a value is malformed.
   void Check() const;
   ScanSimOptions ToOptions() const;

@@ -1,0 +1,275 @@
+// Postures with MakeHuman's skeleton and skin weights, and the full-range
+// population (tests skip without ../shared).
+#include "oracle/makehuman/makehuman_pose.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "oracle/makehuman/makehuman_body.h"
+#include "oracle/makehuman/makehuman_model.h"
+#include "oracle/makehuman/makehuman_population.h"
+#include "oracle/truth/mesh_section.h"
+#include "scanners/core/errors.h"
+#include "tests/support/test_support.h"
+
+namespace bespoke {
+namespace {
+
+std::filesystem::path MakeHumanDir(const std::filesystem::path& shared) {
+  return shared / "data" / "bodies" / "makehuman";
+}
+
+Eigen::Vector3d At(const Body& body, const std::string& name) {
+  return PositionOf(body.mesh, body.landmarks.at(name));
+}
+
+Body Posed(MakeHumanModel* model, std::uint64_t seed, const std::string& posture,
+           const std::string& population = "default") {
+  MakeHumanBodyOptions o;
+  o.seed = seed;
+  o.population = population;
+  o.posture = ParseMakeHumanPosture(posture);
+  return GenerateMakeHumanBody(o, model);
+}
+
+// The bones at and below `bone` (their indices).
+std::set<int> Subtree(const MakeHumanRig& rig, const std::string& bone) {
+  std::set<int> out = {rig.BoneIndex(bone)};
+  for (std::size_t i = 0; i < rig.bones.size(); ++i)  // parents come first
+    if (out.count(rig.bones[i].parent)) out.insert(static_cast<int>(i));
+  return out;
+}
+
+TEST(MakeHumanPose, ABoneTurnMovesItsVerticesRigidlyWhereTheirWeightIsOne) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(MakeHumanDir(shared));
+  const MakeHumanRig& rig = model.Rig();
+  EXPECT_EQ(rig.bones.size(), 163u);
+  const Eigen::MatrixX3d all = model.MorphAll({});
+  const auto joints = RigJoints(rig, all);
+  const Eigen::MatrixX3d rest = model.SkinRows(all);
+  const int bone = rig.BoneIndex("lowerarm01.R");
+  const Eigen::Matrix3d r =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
+  const Eigen::MatrixX3d posed = SkinWithRotations(rig, rest, joints, {{bone, r}});
+  const Eigen::Vector3d h = joints.at(rig.bones[static_cast<std::size_t>(bone)].head);
+  const std::set<int> below = Subtree(rig, "lowerarm01.R");
+  int rigid = 0, still = 0;
+  for (Eigen::Index v = 0; v < rest.rows(); ++v) {
+    double inside = 0;
+    for (const auto& [b, w] : rig.weights[static_cast<std::size_t>(v)])
+      if (below.count(b)) inside += w;
+    const Eigen::Vector3d p = rest.row(v).transpose(), q = posed.row(v).transpose();
+    if (inside > 1 - 1e-12) {
+      EXPECT_LT((q - (h + r * (p - h))).norm(), 1e-12);
+      ++rigid;
+    } else if (inside < 1e-12) {
+      EXPECT_LT((q - p).norm(), 1e-12);
+      ++still;
+    }
+  }
+  std::printf("lowerarm01.R turned: %d vertices rigid, %d still\n", rigid, still);
+  EXPECT_GT(rigid, 300);
+  EXPECT_GT(still, 10000);
+}
+
+TEST(MakeHumanPose, ArmsReachTheirAngleAndTheDatumPointsFollow) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(MakeHumanDir(shared));
+  const Body rest = Posed(&model, 3, "rest");
+  const Body t = Posed(&model, 3, "arms-90");
+  EXPECT_NEAR(t.parameters.at("pose.arm_abduction_deg"), 90, 0.01);
+  std::printf("rest arms %.1f deg; T-pose wrist - shoulder point height %.1f / %.1f mm\n",
+              t.parameters.at("pose.rest_arm_abduction_deg"),
+              At(t, "wrist_right").z() - At(t, "shoulder_right").z(),
+              At(t, "wrist_left").z() - At(t, "shoulder_left").z());
+  // The T-pose arm is horizontal: the wrist joint at the shoulder joint's height
+  // (the frontal angle is exactly 90), the wrist datum point within a forearm's
+  // thickness of the shoulder point's height, far out to the side.
+  for (const char* side : {"right", "left"}) {
+    const std::string s = side;
+    EXPECT_LT(std::abs(At(t, "wrist_" + s).z() - At(t, "shoulder_" + s).z()), 80) << side;
+    EXPECT_GT(std::abs(At(t, "wrist_" + s).x()), std::abs(At(t, "shoulder_" + s).x()) + 300);
+    EXPECT_GT((At(t, "wrist_" + s) - At(rest, "wrist_" + s)).norm(), 300);
+  }
+  // What the arms do not move stays: the crotch and knees within 1 mm.
+  for (const char* name : {"crotch", "knee_right", "ankle_inside_left"})
+    EXPECT_LT((At(t, name) - At(rest, name)).norm(), 1.0) << name;
+  EXPECT_EQ(t.parameters.at("pose.new_self_intersections"), 0);
+}
+
+TEST(MakeHumanPose, ArmsPressedToTheSidesStopAtContact) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(MakeHumanDir(shared));
+  MakeHumanBodyOptions o;
+  o.seed = 3;
+  o.weight = 0.9;  // a heavy body: the arms meet the sides before 5 deg
+  o.posture = ParseMakeHumanPosture("arms-5");
+  const Body stopped = GenerateMakeHumanBody(o, &model);
+  o.posture.stop_at_contact = false;
+  const Body pressed = GenerateMakeHumanBody(o, &model);
+  std::printf(
+      "arms-5 on a heavy body: stopped at %.2f deg (rest %.2f); pressed to %.2f deg "
+      "with %g new crossing face pairs\n",
+      stopped.parameters.at("pose.arm_abduction_deg"),
+      stopped.parameters.at("pose.rest_arm_abduction_deg"),
+      pressed.parameters.at("pose.arm_abduction_deg"),
+      pressed.parameters.at("pose.new_self_intersections"));
+  EXPECT_EQ(stopped.parameters.at("pose.arms_stopped_at_contact"), 1);
+  EXPECT_EQ(stopped.parameters.at("pose.new_self_intersections"), 0);
+  EXPECT_GT(stopped.parameters.at("pose.arm_abduction_deg"), 5.5);
+  EXPECT_NEAR(pressed.parameters.at("pose.arm_abduction_deg"), 5, 0.01);
+  EXPECT_GT(pressed.parameters.at("pose.new_self_intersections"), 0);
+}
+
+TEST(MakeHumanPose, StanceLeanTwistAndHead) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(MakeHumanDir(shared));
+  const Body rest = Posed(&model, 5, "rest");
+  const Body wide = Posed(&model, 5, "feet-40");
+  EXPECT_NEAR(wide.parameters.at("pose.stance_mm"), 400, 0.5);
+  // The malleoli follow the ankle joints (the feet are carried, not turned).
+  const auto spread = [](const Body& b) {
+    return At(b, "ankle_outside_right").x() - At(b, "ankle_outside_left").x();
+  };
+  const double joints_moved = 400 - wide.parameters.at("pose.rest_stance_mm");
+  std::printf("feet-40: rest stance %.1f mm; malleoli spread %.1f -> %.1f mm\n",
+              wide.parameters.at("pose.rest_stance_mm"), spread(rest), spread(wide));
+  EXPECT_NEAR(spread(wide) - spread(rest), joints_moved, 15);
+  const Body lean = Posed(&model, 5, "lean-5");
+  const double forward = At(lean, "back_neck").y() - At(rest, "back_neck").y();
+  const Body twist = Posed(&model, 5, "twist-5");
+  const double right = At(twist, "shoulder_right").y() - At(rest, "shoulder_right").y();
+  const double left = At(twist, "shoulder_left").y() - At(rest, "shoulder_left").y();
+  const Body head = Posed(&model, 5, "head-turn");
+  std::printf(
+      "lean-5: back neck %.1f mm forward; twist-5: shoulders %.1f / %.1f mm; "
+      "head-turn: shoulder %.2f mm\n",
+      forward, right, left, (At(head, "shoulder_right") - At(rest, "shoulder_right")).norm());
+  EXPECT_GT(forward, 25);  // about sin(5 deg) x the neck's height above the pelvis
+  EXPECT_GT(right, 5);     // turning left brings the right shoulder forward
+  EXPECT_LT(left, -5);
+  EXPECT_LT((At(head, "shoulder_right") - At(rest, "shoulder_right")).norm(), 1);
+  EXPECT_THROW(ParseMakeHumanPosture("arms-7"), InputError);
+}
+
+TEST(MakeHumanPopulation, FullRangeCoversTheRangeWithHardCasesInNumbers) {
+  MakeHumanBodyOptions o;
+  o.population = "full";
+  double g_lo = 1, g_hi = 0, age_lo = 100, age_hi = 0, w_lo = 1, w_hi = 0, s_lo = 1e4, s_hi = 0;
+  int between = 0, cases[5] = {};
+  for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+    o.seed = seed;
+    const MakeHumanParameters p = MakeHumanDraw(o);
+    g_lo = std::min(g_lo, p.gender), g_hi = std::max(g_hi, p.gender);
+    between += p.gender > 0.2 && p.gender < 0.8;
+    age_lo = std::min(age_lo, p.age_years), age_hi = std::max(age_hi, p.age_years);
+    w_lo = std::min(w_lo, p.weight), w_hi = std::max(w_hi, p.weight);
+    s_lo = std::min(s_lo, p.stature_mm), s_hi = std::max(s_hi, p.stature_mm);
+    ++cases[p.hard_case];
+  }
+  std::printf(
+      "200 draws: gender %.2f-%.2f (%d between 0.2 and 0.8), age %.0f-%.0f, weight "
+      "%.2f-%.2f, stature %.0f-%.0f; hard cases none %d, thighs %d, belly %d, breasts "
+      "%d, arms %d\n",
+      g_lo, g_hi, between, age_lo, age_hi, w_lo, w_hi, s_lo, s_hi, cases[0], cases[1], cases[2],
+      cases[3], cases[4]);
+  EXPECT_LT(g_lo, 0.02);
+  EXPECT_GT(g_hi, 0.98);
+  EXPECT_GT(between, 15);
+  EXPECT_LT(age_lo, 22);
+  EXPECT_GT(age_hi, 85);
+  EXPECT_LT(w_lo, 0.05);
+  EXPECT_GT(w_hi, 0.95);
+  EXPECT_LT(s_lo, 1480);
+  EXPECT_GT(s_hi, 1950);
+  for (int c = 0; c < 5; ++c) EXPECT_GT(cases[c], 20) << c;
+  // The default population is untouched by the full one's existence.
+  MakeHumanBodyOptions d;
+  d.seed = 7;
+  EXPECT_TRUE(MakeHumanDraw(d).shape.empty());
+  EXPECT_EQ(MakeHumanDraw(d).hard_case, 0);
+}
+
+TEST(MakeHumanPopulation, HardCaseThighsTouch) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(MakeHumanDir(shared));
+  // The gap between the thighs 20-100 mm below the crotch: right-leg
+  // vertices' smallest x minus left-leg vertices' largest x (<= 0: touching).
+  const auto thigh_gap = [&](const Body& body) {
+    const double crotch = At(body, "crotch").z();
+    double right = 1e9, left = -1e9;
+    for (Eigen::Index v = 0; v < body.mesh.num_vertices(); ++v) {
+      const double z = body.mesh.vertices(v, 2);
+      if (z > crotch - 20 || z < crotch - 100) continue;
+      const bool is_right = model.base_body().vertices(v, 0) < 0;  // MakeHuman's -x is the right
+      (is_right ? right : left) = is_right ? std::min(right, body.mesh.vertices(v, 0))
+                                           : std::max(left, body.mesh.vertices(v, 0));
+    }
+    return right - left;
+  };
+  int touching_hard = 0, hard = 0, touching_other = 0, other = 0;
+  MakeHumanBodyOptions o;
+  o.population = "full";
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    o.seed = seed;
+    const Body body = GenerateMakeHumanBody(o, &model);
+    const bool is_hard = body.parameters.at("hard_case") == 1;
+    const bool touching = thigh_gap(body) <= 1.0;
+    (is_hard ? hard : other) += 1;
+    (is_hard ? touching_hard : touching_other) += touching;
+  }
+  std::printf(
+      "full population seeds 1-40: thighs touching in %d of %d 'thighs_touch' bodies, "
+      "%d of %d others\n",
+      touching_hard, hard, touching_other, other);
+  ASSERT_GT(hard, 3);
+  EXPECT_GE(touching_hard, hard * 3 / 4);
+}
+
+// The trunk's hull perimeter at height z (the loop around the midpoint of the
+// front and back waist points).
+double TrunkGirthAt(const Body& body, double z) {
+  const Eigen::Vector3d mid = 0.5 * (At(body, "front_waist") + At(body, "back_waist"));
+  const auto loops = SectionLoops(body.mesh, Eigen::Vector3d(0, 0, z), Eigen::Vector3d::UnitZ());
+  const int i =
+      EnclosingLoop(loops, Eigen::Vector3d(mid.x(), mid.y(), z), Eigen::Vector3d::UnitZ());
+  return i < 0 ? 0
+               : LoopHullPerimeter(loops[static_cast<std::size_t>(i)], Eigen::Vector3d::UnitZ());
+}
+
+TEST(DefinedLandmarks, TheWaistIsTheNarrowestSectionAndMovesWithTheBelly) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(MakeHumanDir(shared));
+  MakeHumanBodyOptions o;
+  o.seed = 2;
+  o.shape["stomach-pregnant"] = -0.3;
+  const Body flat = GenerateMakeHumanBody(o, &model);
+  o.shape["stomach-pregnant"] = 1;
+  const Body belly = GenerateMakeHumanBody(o, &model);
+  o.defined_landmarks = false;
+  const Body table = GenerateMakeHumanBody(o, &model);
+  for (const Body* body : {&flat, &belly}) {
+    const double z = body->parameters.at("level.waist_mm");
+    EXPECT_NEAR(At(*body, "front_waist").z(), z, 1.5);
+    const double hip = body->parameters.at("level.hip_mm");
+    const double top = At(*body, "under_bust").z();
+    const double span = top - hip, at = TrunkGirthAt(*body, z);
+    // No level of the band is narrower (the search refines to 0.5 mm).
+    for (double zz = hip + 0.3 * span; zz <= hip + 0.85 * span; zz += 1)
+      EXPECT_GE(TrunkGirthAt(*body, zz), at - 0.5) << zz;
+  }
+  const double moved = belly.parameters.at("level.waist_mm") - flat.parameters.at("level.waist_mm");
+  std::printf("waist level: flat belly %.1f mm, big belly %.1f mm; table vertex at %.1f mm\n",
+              flat.parameters.at("level.waist_mm"), belly.parameters.at("level.waist_mm"),
+              At(table, "front_waist").z());
+  EXPECT_GT(std::abs(moved), 10);  // the definition decides, not a vertex
+  // Calf: the largest leg girth of its band is at the calf point's level.
+  const double calf = belly.parameters.at("level.calf_right_mm");
+  EXPECT_NEAR(At(belly, "calf_right").z(), calf, 1.5);
+}
+
+}  // namespace
+}  // namespace bespoke

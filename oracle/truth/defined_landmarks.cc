@@ -1,0 +1,181 @@
+#include "oracle/truth/defined_landmarks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "oracle/truth/mesh_section.h"
+#include "scanners/core/errors.h"
+
+namespace bespoke {
+namespace {
+
+const Eigen::Vector3d kUp = Eigen::Vector3d::UnitZ();
+
+double LoopArea(const SectionLoop& loop) {
+  double a = 0;
+  const Eigen::Index n = loop.points.rows();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Eigen::Index j = (i + 1) % n;
+    a += loop.points(i, 0) * loop.points(j, 1) - loop.points(j, 0) * loop.points(i, 1);
+  }
+  return std::abs(0.5 * a);
+}
+
+// The trunk's loop at height z: the closed loop of largest area.
+SectionLoop TrunkLoop(const TriangleMesh& mesh, double z) {
+  const std::vector<SectionLoop> loops = SectionLoops(mesh, Eigen::Vector3d(0, 0, z), kUp);
+  const SectionLoop* best = nullptr;
+  double best_area = 0;
+  for (const SectionLoop& l : loops) {
+    const double a = l.closed ? LoopArea(l) : 0;
+    if (a > best_area) best = &l, best_area = a;
+  }
+  if (!best) throw InputError("defined landmarks: no trunk section at z = " + std::to_string(z));
+  return *best;
+}
+
+// The loop's crossings with the plane x = x0, as points; front = largest y.
+std::vector<Eigen::Vector3d> CrossingsAtX(const SectionLoop& loop, double x0) {
+  std::vector<Eigen::Vector3d> out;
+  const Eigen::Index n = loop.points.rows();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Eigen::Vector3d a = loop.points.row(i), b = loop.points.row((i + 1) % n);
+    if ((a.x() - x0) * (b.x() - x0) > 0 || a.x() == b.x()) continue;
+    const double t = (x0 - a.x()) / (b.x() - a.x());
+    out.push_back(a + t * (b - a));
+  }
+  if (out.empty())
+    throw InputError("defined landmarks: a trunk section misses x = " + std::to_string(x0));
+  return out;
+}
+
+Eigen::Vector3d FrontAt(const SectionLoop& loop, double x0) {
+  const auto c = CrossingsAtX(loop, x0);
+  return *std::max_element(c.begin(), c.end(),
+                           [](const auto& a, const auto& b) { return a.y() < b.y(); });
+}
+
+Eigen::Vector3d BackAt(const SectionLoop& loop, double x0) {
+  const auto c = CrossingsAtX(loop, x0);
+  return *std::min_element(c.begin(), c.end(),
+                           [](const auto& a, const auto& b) { return a.y() < b.y(); });
+}
+
+Eigen::Vector3d Extreme(const SectionLoop& loop, int axis, double sign) {
+  Eigen::Index best = 0;
+  (sign * loop.points.col(axis).array()).maxCoeff(&best);
+  return loop.points.row(best);
+}
+
+// The z in [lo, hi] maximising score(z): a scan in `step` steps, then one
+// refinement to step / 8 around the best.
+double ArgMax(double lo, double hi, double step, const std::function<double(double)>& score) {
+  if (!(hi > lo)) throw InputError("defined landmarks: an empty search band");
+  double best = lo, best_score = -std::numeric_limits<double>::infinity();
+  const auto visit = [&](double z) {
+    const double s = score(z);
+    if (s > best_score) best_score = s, best = z;
+  };
+  for (double z = lo; z <= hi; z += step) visit(z);
+  const double centre = best;
+  for (double z = std::max(lo, centre - step); z <= std::min(hi, centre + step); z += step / 8)
+    visit(z);
+  return best;
+}
+
+void Place(Body* body, const std::string& name, const Eigen::Vector3d& position) {
+  body->landmarks[name] = ClosestSurfacePoint(body->mesh, position);
+}
+
+Eigen::Vector3d At(const Body& body, const std::string& name) {
+  const auto it = body.landmarks.find(name);
+  if (it == body.landmarks.end())
+    throw InputError("defined landmarks: the body has no datum point '" + name + "'");
+  return PositionOf(body.mesh, it->second);
+}
+
+// The leg loop at z nearest the given point (the calf of that side).
+double LegGirth(const TriangleMesh& mesh, double z, const Eigen::Vector3d& near,
+                Eigen::Vector3d* back) {
+  const std::vector<SectionLoop> loops = SectionLoops(mesh, Eigen::Vector3d(0, 0, z), kUp);
+  const int i = NearestLoop(loops, Eigen::Vector3d(near.x(), near.y(), z));
+  if (i < 0) return -1;
+  const SectionLoop& loop = loops[static_cast<std::size_t>(i)];
+  if (back) *back = Extreme(loop, 1, -1);
+  return LoopHullPerimeter(loop, kUp);
+}
+
+}  // namespace
+
+void DefinedLandmarkOptions::Check() const {
+  if (!(step_mm >= 0.5 && step_mm <= 20))
+    throw InputError("defined landmarks: step_mm must be in [0.5, 20]");
+}
+
+DefinedLevels PlaceDefinedLandmarks(const DefinedLandmarkOptions& options,
+                                    const std::vector<int>& seam, Body* body) {
+  options.Check();
+  const TriangleMesh& mesh = body->mesh;
+  const double step = options.step_mm;
+  DefinedLevels levels;
+  const double crotch = At(*body, "crotch").z(), under_bust = At(*body, "under_bust").z();
+  // Hip: the section reaching furthest back, from just above the crotch to
+  // the middle of the crotch-to-under-bust span.
+  levels.hip_mm = ArgMax(crotch + 20, crotch + 0.5 * (under_bust - crotch), step,
+                         [&](double z) { return -TrunkLoop(mesh, z).points.col(1).minCoeff(); });
+  const SectionLoop hip = TrunkLoop(mesh, levels.hip_mm);
+  Place(body, "hip_back", BackAt(hip, 0));
+  Place(body, "hip_right", Extreme(hip, 0, 1));
+  Place(body, "hip_left", Extreme(hip, 0, -1));
+  // Waist: the narrowest trunk section in its band.
+  const double span = under_bust - levels.hip_mm;
+  levels.waist_mm = ArgMax(levels.hip_mm + 0.3 * span, levels.hip_mm + 0.85 * span, step,
+                           [&](double z) { return -LoopHullPerimeter(TrunkLoop(mesh, z), kUp); });
+  const SectionLoop waist = TrunkLoop(mesh, levels.waist_mm);
+  Place(body, "front_waist", FrontAt(waist, 0));
+  Place(body, "back_waist", BackAt(waist, 0));
+  Place(body, "side_waist_right", Extreme(waist, 0, 1));
+  Place(body, "side_waist_left", Extreme(waist, 0, -1));
+  levels.middle_hip_mm = 0.5 * (levels.hip_mm + levels.waist_mm);
+  Place(body, "middle_hip_front", FrontAt(TrunkLoop(mesh, levels.middle_hip_mm), 0));
+  // Under-bust: the sharpest bend of the front profile under the bust points.
+  const Eigen::Vector3d bust_r = At(*body, "bust_right"), bust_l = At(*body, "bust_left");
+  const double bust_z = 0.5 * (bust_r.z() + bust_l.z());
+  const auto depth = [&](double z) {
+    const SectionLoop loop = TrunkLoop(mesh, z);
+    // In the bust points' sagittal planes, kept within the section's width.
+    const double lo = 0.8 * loop.points.col(0).minCoeff(), hi = 0.8 * loop.points.col(0).maxCoeff();
+    return 0.5 * (FrontAt(loop, std::clamp(bust_r.x(), lo, hi)).y() +
+                  FrontAt(loop, std::clamp(bust_l.x(), lo, hi)).y());
+  };
+  const double h = 2 * step;
+  levels.under_bust_mm = ArgMax(bust_z - 160, bust_z - 20, step, [&](double z) {
+    return depth(z + h) + depth(z - h) - 2 * depth(z);  // convex corner of the profile
+  });
+  Place(body, "under_bust", FrontAt(TrunkLoop(mesh, levels.under_bust_mm), 0));
+  // Crotch: the lowest seam vertex below the hip level.
+  int lowest = -1;
+  for (const int v : seam)
+    if (mesh.vertices(v, 2) < levels.hip_mm &&
+        (lowest < 0 || mesh.vertices(v, 2) < mesh.vertices(lowest, 2)))
+      lowest = v;
+  if (lowest >= 0) Place(body, "crotch", mesh.vertices.row(lowest).transpose());
+  // Calves: the largest leg girth between ankle and knee.
+  for (const char* side : {"right", "left"}) {
+    const std::string s = side;
+    const Eigen::Vector3d knee = At(*body, "knee_" + s), ankle = At(*body, "ankle_inside_" + s);
+    const Eigen::Vector3d near = At(*body, "calf_" + s);
+    const double z =
+        ArgMax(ankle.z() + 0.25 * (knee.z() - ankle.z()), ankle.z() + 0.9 * (knee.z() - ankle.z()),
+               step, [&](double zz) { return LegGirth(mesh, zz, near, nullptr); });
+    Eigen::Vector3d back;
+    LegGirth(mesh, z, near, &back);
+    Place(body, "calf_" + s, back);
+    (s == "right" ? levels.calf_right_mm : levels.calf_left_mm) = z;
+  }
+  return levels;
+}
+
+}  // namespace bespoke

@@ -1,0 +1,66 @@
+// Datum points placed by their catalogue definition on the exact (posed)
+// mesh, not as fixed vertices: where the catalogue defines a point by a
+// level or an extreme of the surface, the level is searched on each body.
+//
+// Sections are exact horizontal mesh sections (mesh_section.h); the trunk's
+// section at a level is its loop of largest area (arms and hands are
+// separate loops); a girth level is judged by the loop's convex hull
+// perimeter (the tape). Levels are searched in step_mm steps, then refined
+// to step_mm / 8 around the best.
+//
+//   hip (hip_back, hip_right, hip_left): the level of the most prominent
+//     buttock (the trunk section reaching furthest back, -y) between the
+//     crotch and the waist search band; hip_back the back-most point of that
+//     section on x = 0, hip_* its lateral extremes.
+//   waist (front_waist, back_waist, side_waist_*): the narrowest trunk
+//     section between the lowest rib and the iliac crest, taken as the band
+//     from 30 % to 85 % of the way from the hip level up to the under-bust
+//     datum point (proxies: the iliac crest lies above the hip level, the
+//     lowest rib below the breasts); front and back on x = 0, sides the
+//     lateral extremes.
+//   middle_hip_front: the front of the trunk section on x = 0 midway between
+//     the hip and waist levels.
+//   under_bust: the inframammary fold: in the sagittal plane of the bust
+//     points, the level in the 20-160 mm below them where the front profile
+//     bends most sharply (largest second difference of its depth); the
+//     point on x = 0 at that level.
+//   crotch: the lowest point of the trunk's mid-sagittal line, the seam
+//     vertices the caller names (`seam`), below the hip level.
+//   calf_*: the back of the leg at the level of its largest girth between
+//     the ankle and the knee datum points (25-90 % of the way up).
+// Points not listed here stay as given (anatomical points: cervicale,
+// acromion, malleoli, ...). Each moved point becomes the surface point
+// closest to its position.
+#ifndef BESPOKE_ORACLE_TRUTH_DEFINED_LANDMARKS_H_
+#define BESPOKE_ORACLE_TRUTH_DEFINED_LANDMARKS_H_
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "oracle/body/body.h"
+
+namespace bespoke {
+
+struct DefinedLandmarkOptions {
+  double step_mm = 4;  // level search step, mm (refined to step_mm / 8); default 4; 0.5-20
+  // Throws InputError when out of range.
+  void Check() const;
+};
+
+struct DefinedLevels {
+  double hip_mm = 0, waist_mm = 0, middle_hip_mm = 0, under_bust_mm = 0;  // heights (z)
+  double calf_right_mm = 0, calf_left_mm = 0;
+};
+
+// Moves the defined datum points of `body` (in place) to where their
+// definitions put them. `seam`: the mesh's mid-sagittal vertices (for the
+// crotch; empty keeps the crotch). Needs the landmarks named above and
+// under_bust, bust_*, knee_*, ankle_inside_* to start from; InputError when
+// one is missing or a section is empty.
+DefinedLevels PlaceDefinedLandmarks(const DefinedLandmarkOptions& options,
+                                    const std::vector<int>& seam, Body* body);
+
+}  // namespace bespoke
+
+#endif  // BESPOKE_ORACLE_TRUTH_DEFINED_LANDMARKS_H_
