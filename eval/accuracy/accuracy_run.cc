@@ -1,6 +1,7 @@
 #include "eval/accuracy/accuracy_run.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -26,6 +27,22 @@ namespace bespoke {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+namespace {
+
+// "a,b,c" -> {a, b, c}; "" -> {}.
+std::vector<std::string> SplitList(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (!text.empty() && start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    out.push_back(text.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
 void AccuracyRunOptions::Check() const {
   if (subjects < 1 || subjects > 1000) throw InputError("--subjects must be 1-1000");
   if (model != "parametric" && model != "makehuman") {
@@ -33,11 +50,16 @@ void AccuracyRunOptions::Check() const {
   }
   if (population != "default" && population != "full")
     throw InputError("--population must be default or full, not '" + population + "'");
-  SynthBodyOptions body;
-  body.model = model;
-  body.population = population;
-  body.posture = posture;
-  body.Check();  // InputError for an unknown posture
+  for (const std::string& p : SplitList(posture)) {
+    SynthBodyOptions body;
+    body.model = model;
+    body.population = population;
+    body.posture = p;
+    body.Check();  // InputError for an unknown posture
+  }
+  for (const BoothOptions& b : booths) b.Check();
+  if (repeat_body && !reuse_set.empty())
+    throw InputError("--repeat-body and --reuse-set cannot be combined");
   if (pose != "a" && pose != "t" && pose != "both")
     throw InputError("--pose must be a, t or both, not '" + pose + "'");
   if (pose == "t" && model != "parametric") {
@@ -71,7 +93,10 @@ namespace {
 
 struct SubjectSpec {
   std::string name;
-  std::uint64_t seed = 0;
+  std::uint64_t seed = 0;       // of the scan (and of the body unless body_seed is set)
+  std::uint64_t body_seed = 0;  // 0: seed
+  std::string posture;
+  const BoothOptions* booth = nullptr;  // null: the run's scanner booth
   std::vector<std::string> params;
   const json* reuse_truth = nullptr;  // a body-frame truth document to reuse, or null
 };
@@ -111,9 +136,9 @@ SubjectOutcome RunSubject(const AccuracyRunOptions& options, const SubjectSpec& 
   try {
     SynthBodyOptions body_options;
     body_options.model = options.model;
-    body_options.seed = spec.seed;
+    body_options.seed = spec.body_seed != 0 ? spec.body_seed : spec.seed;
     body_options.population = options.population;
-    if (spec.name.rfind("posture_", 0) != 0) body_options.posture = options.posture;
+    body_options.posture = spec.posture;
     body_options.params = spec.params;
     body_options.makehuman_dir = options.makehuman_dir;
     const Body body = generator.Generate(body_options);
@@ -133,6 +158,7 @@ SubjectOutcome RunSubject(const AccuracyRunOptions& options, const SubjectSpec& 
     stage = "scan";
     ScanSimOptions scan_options = options.scanner;
     scan_options.seed = spec.seed;
+    if (spec.booth) scan_options.booth = *spec.booth;
     ScanSimResult scan = SimulateScan(scan_options, body.mesh);
     out.truth = ScanTruthDocument(truth, scan_options, scan, LengthUnit::kMillimetre, "(in memory)",
                                   spec.name);
@@ -237,6 +263,11 @@ AccuracyReport RunAccuracy(const AccuracyRunOptions& options, const SubjectMeasu
     SubjectSpec spec;
     spec.name = SubjectName(i);
     spec.seed = options.seed * 1000 + static_cast<std::uint64_t>(i) + 1;
+    if (options.repeat_body) spec.body_seed = options.seed * 1000 + 1;
+    const std::vector<std::string> postures = SplitList(options.posture);
+    if (!postures.empty()) spec.posture = postures[static_cast<std::size_t>(i) % postures.size()];
+    if (!options.booths.empty())
+      spec.booth = &options.booths[static_cast<std::size_t>(i) % options.booths.size()];
     spec.params = options.params;
     if (options.model == "parametric") {
       const double arms = options.pose == "t" ? options.t_pose_deg : options.a_pose_deg;

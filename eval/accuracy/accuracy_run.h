@@ -44,7 +44,14 @@ struct AccuracyRunOptions {
   std::string model = "parametric";    // "parametric" or "makehuman"
   std::uint64_t seed = 1;              // of the set: subject i uses seed * 1000 + i + 1
   std::string population = "default";  // "default" or "full" (oracle/synth/synth_body.h)
-  std::string posture;  // every subject's posture (oracle/synth/synth_body.h); "" = the model's
+  // Postures (oracle/synth/synth_body.h names), comma-separated: subject i
+  // takes the (i mod count)-th; "" = the model's own.
+  std::string posture;
+  // Booths the subjects cycle through like the postures; empty = scanner.booth.
+  std::vector<BoothOptions> booths;
+  // Every subject is the body of seed * 1000 + 1, scanned with its own seed
+  // (repeatability: the spread of its errors is the scanner's and measurer's).
+  bool repeat_body = false;
   std::vector<std::string> params;      // "name=value" body parameters for every subject
   std::filesystem::path makehuman_dir;  // default: oracle/synth's DefaultMakeHumanDir()
   std::string pose = "a";  // "a", "t" (parametric only) or "both" (subjects in A + posture test)

@@ -357,3 +357,42 @@ TEST(ParametricBody, OptionsAreCheckedAndSetByName) {
 
 }  // namespace
 }  // namespace bespoke
+
+namespace bespoke {
+namespace {
+
+// The full-range population: statures and waists far beyond the default
+// spread; its extremes still build closed bodies.
+TEST(ParametricBody, FullPopulationSpansTheRangeAndBuilds) {
+  ParametricBodyOptions o;
+  double s_lo = 1e9, s_hi = 0, wh_lo = 1e9, wh_hi = 0, d_lo = 1e9, d_hi = 0;
+  std::uint64_t tallest = 0, widest = 0;
+  for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+    o.seed = seed;
+    const ParametricBodyOptions f = SeededOptions(o, "full");
+    EXPECT_NO_THROW(f.Check());
+    if (f.stature_mm > s_hi) tallest = seed;
+    s_lo = std::min(s_lo, f.stature_mm), s_hi = std::max(s_hi, f.stature_mm);
+    const double wh = f.waist_girth_mm;
+    if (wh > wh_hi) widest = seed;
+    wh_lo = std::min(wh_lo, wh), wh_hi = std::max(wh_hi, wh);
+    o.seed = seed;
+    const double d = SeededOptions(o).waist_girth_mm;
+    d_lo = std::min(d_lo, d), d_hi = std::max(d_hi, d);
+  }
+  std::printf("full: stature %.0f-%.0f mm, waist %.0f-%.0f mm (default draw %.0f-%.0f)\n", s_lo,
+              s_hi, wh_lo, wh_hi, d_lo, d_hi);
+  EXPECT_LT(s_lo, 1500);
+  EXPECT_GT(s_hi, 1950);
+  EXPECT_LT(wh_lo, d_lo - 50);  // thinner than the default draw's thinnest
+  EXPECT_GT(wh_hi, d_hi + 50);  // and heavier than its heaviest
+  for (const std::uint64_t seed : {tallest, widest}) {
+    o.seed = seed;
+    const Body body = GenerateParametricBody(SeededOptions(o, "full"));
+    EXPECT_TRUE(AnalyzeTopology(body.mesh).IsClosedSphere()) << seed;
+  }
+  EXPECT_THROW(SeededOptions(o, "no-such"), InputError);
+}
+
+}  // namespace
+}  // namespace bespoke

@@ -89,9 +89,10 @@ const std::vector<std::string>& BoothPresetNames() {
 BoothOptions BoothPreset(const std::string& name) {
   BoothOptions o;
   // Depth image of the 6 x 7 layout for about `points` points of an adult:
-  // the count grows with the pixel count (327k body points at 240 x 180).
+  // the count grows with the pixel count (about 350k points of a MakeHuman
+  // body at 240 x 180).
   const auto density = [&o](double points) {
-    const double scale = std::sqrt(points / 390e3);
+    const double scale = std::sqrt(points / 350e3);
     o.width_px = static_cast<int>(std::lround(240 * scale));
     o.height_px = static_cast<int>(std::lround(180 * scale));
   };

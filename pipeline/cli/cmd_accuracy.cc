@@ -1,4 +1,5 @@
 // `bespoke accuracy --subjects N [--model parametric|makehuman] [--seed S]
+//  [--population default|full] [--posture P[,P...]] [--booth B[,B...]] [--repeat-body]
 //  [--noise-mm 1] [--pose a|t|both] [--jobs N] [--param k=v ...]
 //  [--reuse-set SYNTH_SET_DIR] [--truth-landmarks] [--keep-subjects] -o REPORT_DIR`
 // Generates N subjects with the oracle, scans them virtually, cleans,
@@ -15,6 +16,7 @@
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
@@ -37,6 +39,7 @@ struct AccuracyCommandOptions {
   AccuracyRunOptions run;
   std::string pose;    // "" = both for parametric, a for makehuman
   ScanSimCli scanner;  // the virtual scanner's options used here (pipeline/cli/scan_sim_cli.h)
+  std::string booths = "default";  // --booth NAME[,NAME...]
   bool keep_subjects = false;
   std::filesystem::path output;
 };
@@ -101,8 +104,12 @@ CommandRunner SetupAccuracyCommand(CLI::App& app) {
   app.add_option("--population", r.population,
                  "Population of the subjects: default or full (the whole range, hard cases)");
   app.add_option("--posture", r.posture,
-                 "Posture of every subject: rest, arms-5|15|30|45|90, feet-together, feet-40, "
-                 "lean-5, twist-5, head-turn, joined with + (default: the model's own)");
+                 "Posture: rest, arms-5|15|30|45|90, feet-together, feet-40, lean-5, twist-5, "
+                 "head-turn, joined with +; a comma list is cycled through by the subjects "
+                 "(default: the model's own)");
+  app.add_flag("--repeat-body", r.repeat_body,
+               "Every subject is the same body (seed S * 1000 + 1), scanned with its own seed "
+               "(repeatability)");
   app.add_option("--param", r.params,
                  "Body size or model value for every subject, name=value (repeatable)");
   app.add_option("--makehuman-dir", r.makehuman_dir,
@@ -113,8 +120,9 @@ CommandRunner SetupAccuracyCommand(CLI::App& app) {
                  "Fraction of outlier points in each scan (default 0.02)");
   app.add_option("--transform", o->scanner.transform,
                  "Scanner frame: none, random (rigid) or y-up (default none)");
-  app.add_option("--booth", o->scanner.booth,
-                 "Named booth: default, sparse, sparse-3, 60k, 120k, 250k, 500k (default default)");
+  app.add_option("--booth", o->booths,
+                 "Named booth: default, sparse, sparse-3, 60k, 120k, 250k, 500k; a comma list "
+                 "is cycled through by the subjects (default default)");
   app.add_option("--sensors", o->scanner.sensors,
                  "DIRECTIONSxHEIGHTS sensors (default: the booth's, 6x7)");
   app.add_option("--resolution", o->scanner.resolution,
@@ -136,8 +144,22 @@ CommandRunner SetupAccuracyCommand(CLI::App& app) {
   return [o](const GlobalOptions& global) {
     AccuracyRunOptions run = o->run;
     run.pose = !o->pose.empty() ? o->pose : run.model == "parametric" ? "both" : "a";
+    std::vector<std::string> names;
+    for (std::size_t start = 0; start <= o->booths.size();) {
+      const std::size_t comma = std::min(o->booths.find(',', start), o->booths.size());
+      names.push_back(o->booths.substr(start, comma - start));
+      start = comma + 1;
+    }
+    o->scanner.booth = names.front();
     o->scanner.Check();
     run.scanner = o->scanner.ToOptions();
+    if (names.size() > 1) {
+      for (const std::string& name : names) {
+        ScanSimCli one = o->scanner;
+        one.booth = name;
+        run.booths.push_back(one.ToOptions().booth);
+      }
+    }
     if (o->keep_subjects) run.subjects_dir = o->output / "subjects";
     run.Check();
     CreateDirectories(o->output);
@@ -156,7 +178,8 @@ CommandRunner SetupAccuracyCommand(CLI::App& app) {
                                {"noise_mm", o->scanner.noise_mm},
                                {"outliers", o->scanner.outliers},
                                {"transform", o->scanner.transform},
-                               {"booth", o->scanner.booth},
+                               {"booth", o->booths},
+                               {"repeat_body", run.repeat_body},
                                {"sensors", o->scanner.sensors},
                                {"resolution", o->scanner.resolution},
                                {"jobs", run.jobs},
