@@ -4,7 +4,8 @@
 //
 // The blend (our reading of the target folders' names; docs/oracle.md,
 // "MakeHuman bodies", has the details): the macro parameters are
-//   gender g (0 female .. 1 male), age in years (25 .. 90), muscle m and
+//   gender g (0 female .. 1 male), age in years (18 .. 90; the
+//   targets' young end is 25), muscle m and
 //   weight w (0 .. 1, 0.5 average), proportions p (0 uncommon, 0.5 neutral,
 //   1 ideal), ethnic mix (african, asian, caucasian; normalised to sum 1),
 //   breast cup and firmness (0 .. 1, 0.5 average; women only),

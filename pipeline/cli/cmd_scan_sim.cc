@@ -1,6 +1,6 @@
 // `bespoke scan-sim BODY.obj -o SCAN.ply [--truth TRUTH.json [--truth-out F]]
 //  [--preview PNG] [--body-units U] + the scanner options (pipeline/cli/scan_sim_cli.h:
-//  --seed --noise-mm --sensors --resolution --outliers --floor/--no-floor
+//  --seed --noise-mm --booth --sensors --resolution --outliers --floor/--no-floor
 //  --stray-objects --transform --units --misalign-mm --misalign-deg --pcd --labels)`
 // Simulates a body-scanner booth looking at BODY (a closed mesh in the body
 // frame; its unit guessed from its size unless --body-units) and writes the
