@@ -12,11 +12,6 @@ namespace bespoke {
 namespace fs = std::filesystem;
 namespace {
 
-std::string Lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
 bool IsIdChar(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-' ||
          c == '+';
@@ -60,7 +55,7 @@ void Walk(const DiscoverOptions& options, const fs::path& root, const fs::path& 
 
 bool HasScanExtension(const fs::path& path) {
   static const std::set<std::string> kExtensions = {".ply", ".pcd", ".obj", ".xyz", ".csv", ".txt"};
-  return kExtensions.count(Lower(path.extension().string())) > 0;
+  return kExtensions.count(AsciiLower(path.extension().string())) > 0;
 }
 
 std::vector<ScanEntry> DiscoverScans(const DiscoverOptions& options, const fs::path& dir) {
@@ -77,7 +72,7 @@ std::vector<ScanEntry> DiscoverScans(const DiscoverOptions& options, const fs::p
     std::string id;
     for (size_t i = 0; i < stem.size(); ++i)
       id += stem[i] == '/' ? std::string("__") : std::string(1, stem[i]);
-    if (with_extension) id += "_" + Lower(rel.extension().string().substr(1));
+    if (with_extension) id += "_" + AsciiLower(rel.extension().string().substr(1));
     return SanitizeId(id);
   };
   std::map<std::string, int> first_choice;
@@ -95,70 +90,26 @@ std::vector<ScanEntry> DiscoverScans(const DiscoverOptions& options, const fs::p
   return scans;
 }
 
-std::vector<std::string> SplitCsvRecord(const std::string& line) {
-  std::vector<std::string> fields(1);
-  bool quoted = false;
-  for (size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        fields.back() += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        fields.back() += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      fields.emplace_back();
-    } else if (c != '\r') {
-      fields.back() += c;
-    }
-  }
-  return fields;
-}
-
-std::string CsvField(const std::string& value) {
-  if (value.find_first_of(",\"\r\n") == std::string::npos) return value;
-  std::string out = "\"";
-  for (char c : value) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
-
 std::vector<ScanEntry> ReadManifest(const fs::path& manifest) {
-  std::ifstream in(manifest, std::ios::binary);
-  if (!in) throw InputError(manifest, "cannot open manifest");
+  const std::vector<CsvRecord> records = ReadCsvRecords(manifest);
+  if (records.empty()) throw InputError(manifest, "empty manifest (no header line)");
   const fs::path base = Absolute(manifest).parent_path();
-  std::map<std::string, size_t> column;
+  const CsvColumns columns(records[0]);
+  if (!columns.Has("id") || !columns.Has("path")) {
+    throw InputError(manifest, "line " + std::to_string(records[0].line) +
+                                   ": the header must name the columns 'id' and 'path'");
+  }
   std::vector<ScanEntry> scans;
   std::map<std::string, int> id_line;
-  std::string line, record;
-  int line_number = 0, record_line = 0;
-  auto field = [&](const std::vector<std::string>& f, const char* name) {
-    auto it = column.find(name);
-    return it != column.end() && it->second < f.size() ? f[it->second] : std::string();
-  };
-  while (std::getline(in, line)) {
-    ++line_number;
-    if (record.empty()) record_line = line_number;
-    record += record.empty() ? line : "\n" + line;
-    if (std::count(record.begin(), record.end(), '"') % 2 == 1) continue;  // quoted newline
-    const std::string text = record;
-    record.clear();
-    const std::string where = "line " + std::to_string(record_line) + ": ";
-    if (text.find_first_not_of(" \t\r") == std::string::npos || text[0] == '#') continue;
-    std::vector<std::string> f = SplitCsvRecord(text);
-    if (column.empty()) {
-      for (size_t i = 0; i < f.size(); ++i) column[Lower(f[i])] = i;
-      if (!column.count("id") || !column.count("path")) {
-        throw InputError(manifest, where + "the header must name the columns 'id' and 'path'");
-      }
-      continue;
-    }
-    ScanEntry entry{field(f, "id"), {}, field(f, "design"), field(f, "units"), {}};
-    const std::string path = field(f, "path");
+  for (size_t r = 1; r < records.size(); ++r) {
+    const CsvRecord& record = records[r];
+    const std::string where = "line " + std::to_string(record.line) + ": ";
+    ScanEntry entry{columns.Field(record, "id"),
+                    {},
+                    columns.Field(record, "design"),
+                    columns.Field(record, "units"),
+                    {}};
+    const std::string path = columns.Field(record, "path");
     if (entry.id.empty() || path.empty()) throw InputError(manifest, where + "empty id or path");
     if (entry.id[0] == '.' || !std::all_of(entry.id.begin(), entry.id.end(), IsIdChar)) {
       throw InputError(manifest, where + "id '" + entry.id +
@@ -168,17 +119,14 @@ std::vector<ScanEntry> ReadManifest(const fs::path& manifest) {
       throw InputError(manifest, where + "id '" + entry.id + "' repeats line " +
                                      std::to_string(id_line[entry.id]));
     }
-    id_line[entry.id] = record_line;
+    id_line[entry.id] = record.line;
     entry.path = fs::path(path).is_absolute() ? fs::path(path).lexically_normal()
                                               : (base / path).lexically_normal();
-    if (const std::string lm = field(f, "landmarks"); !lm.empty()) {
+    if (const std::string lm = columns.Field(record, "landmarks"); !lm.empty()) {
       entry.landmarks = fs::path(lm).is_absolute() ? fs::path(lm) : (base / lm).lexically_normal();
     }
     scans.push_back(std::move(entry));
   }
-  if (!record.empty())
-    throw InputError(manifest, "line " + std::to_string(record_line) + ": unterminated quote");
-  if (column.empty()) throw InputError(manifest, "empty manifest (no header line)");
   std::sort(scans.begin(), scans.end(),
             [](const ScanEntry& a, const ScanEntry& b) { return a.id < b.id; });
   return scans;

@@ -13,7 +13,7 @@
 // would get the same id ("a.ply" and "a.pcd") both get the extension appended
 // ("a_ply", "a_pcd"); remaining clashes get "-2", "-3" in path order.
 //
-// Manifest: a CSV file (RFC 4180 quoting) with a header naming the columns;
+// Manifest: a CSV file (csv.h) with a header naming the columns;
 // `id` and `path` are required, `design`, `units` and `landmarks` optional,
 // other columns are ignored. Relative paths are relative to the manifest's
 // folder. Ids must be unique and use only [A-Za-z0-9._+-] (not starting
@@ -27,6 +27,8 @@
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include "pipeline/batch/csv.h"  // manifests are CSV
 
 namespace bespoke {
 
@@ -76,13 +78,6 @@ Shard ParseShard(const std::string& text);
 // p % count == index - 1. Round robin keeps shard sizes within one of each
 // other and does not depend on anything but the sorted list.
 std::vector<ScanEntry> SelectShard(const std::vector<ScanEntry>& sorted_scans, const Shard& shard);
-
-// Splits one CSV record (no trailing newline) into fields (RFC 4180 quotes).
-// Exposed for tests and the merge step.
-std::vector<std::string> SplitCsvRecord(const std::string& line);
-
-// Quotes a CSV field when it holds a comma, quote, CR or LF.
-std::string CsvField(const std::string& value);
 
 }  // namespace bespoke
 
