@@ -6,8 +6,9 @@ set(_bespoke_catalogue_cc ${CMAKE_CURRENT_BINARY_DIR}/catalogue_json.cc)
 add_custom_command(
   OUTPUT ${_bespoke_catalogue_cc}
   COMMAND ${CMAKE_COMMAND} -DIN=${_bespoke_catalogue_json} -DOUT=${_bespoke_catalogue_cc}
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/embed_json.cmake
-  DEPENDS ${_bespoke_catalogue_json} ${CMAKE_CURRENT_SOURCE_DIR}/embed_json.cmake
+          -DFUNCTION=BuiltinCatalogueJson -DHEADER=measure/catalogue/catalogue.h
+          -P ${PROJECT_SOURCE_DIR}/cmake/embed_text.cmake
+  DEPENDS ${_bespoke_catalogue_json} ${PROJECT_SOURCE_DIR}/cmake/embed_text.cmake
   COMMENT "Embedding the measurement catalogue"
   VERBATIM)
 target_sources(bespoke_catalogue PRIVATE ${_bespoke_catalogue_cc})
