@@ -27,8 +27,7 @@ std::string Targets(const AccuracyReport& report) {
   const AccuracySummary& s = report.summary;
   const int judged_total = static_cast<int>(s.measurements.size());
   std::string html =
-      "<h2>Targets (issue "
-      "5)</h2>\n<table><tr><th>target</th><th>measured</th><th>verdict</th></tr>\n";
+      "<h2>Targets</h2>\n<table><tr><th>target</th><th>measured</th><th>verdict</th></tr>\n";
   html += "<tr><td>every measurement passes ISO 20685-1</td><td>" + std::to_string(s.passed) +
           " of " + std::to_string(judged_total) + " pass, " + std::to_string(s.failed) + " fail, " +
           std::to_string(s.not_judged) + " not judged (n &lt; 2)</td>" +
@@ -37,12 +36,14 @@ std::string Targets(const AccuracyReport& report) {
           " mm</td><td>" + Num(s.large_girth_mae_mm, 2) + " mm</td>" +
           Verdict(s.large_girth_mae_mm <= report.targets.large_girth_mae_mm ? "met" : "missed") +
           "</tr>\n";
-  html +=
-      "<tr><td>median landmark error &le; " + Num(report.targets.median_landmark_error_mm, 0) +
-      " mm</td><td>" + Num(s.median_landmark_error_mm, 2) + " mm</td>" +
-      Verdict(s.median_landmark_error_mm <= report.targets.median_landmark_error_mm ? "met"
-                                                                                    : "missed") +
-      "</tr>\n";
+  if (!s.landmarks.empty()) {
+    html +=
+        "<tr><td>median landmark error &le; " + Num(report.targets.median_landmark_error_mm, 0) +
+        " mm</td><td>" + Num(s.median_landmark_error_mm, 2) + " mm</td>" +
+        Verdict(s.median_landmark_error_mm <= report.targets.median_landmark_error_mm ? "met"
+                                                                                      : "missed") +
+        "</tr>\n";
+  }
   if (report.posture) {
     const PostureComparison& p = *report.posture;
     html += "<tr><td>posture: every length of the " + XmlEscape(p.pose_b) + " within " +
@@ -56,32 +57,73 @@ std::string Targets(const AccuracyReport& report) {
   return html + "</table>\n";
 }
 
+// A link to `file` labelled `text` when `plots` holds it, else "".
+std::string PlotLink(const std::vector<std::string>& plots, const std::string& file,
+                     const std::string& text) {
+  if (std::find(plots.begin(), plots.end(), file) == plots.end()) return "";
+  return "<a href=\"" + XmlEscape(file) + "\">" + text + "</a>";
+}
+
 std::string MeasurementTable(const AccuracyReport& report, const std::vector<std::string>& plots) {
+  const std::string label = XmlEscape(report.reference_label);
   std::string html =
-      "<h2>Measurements: ISO 20685-1</h2>\n<p>Error = measured &minus; truth (mm). Pass when the "
-      "95 % "
-      "confidence interval of the mean error (Student t, n &minus; 1 degrees of freedom) lies "
-      "within "
-      "&plusmn;limit. Numbers (#) are the x positions in the error-distribution charts.</p>\n"
+      "<h2>Measurements: ISO 20685-1</h2>\n<p>Error = measured &minus; " + label +
+      " (mm). Pass when the 95 % confidence interval of the mean error (Student t, n &minus; 1 "
+      "degrees of freedom) lies within &plusmn;limit. Limits of agreement (Bland-Altman): bias "
+      "&plusmn; 1.96 SD, the range that 95 % of single differences fall in. Numbers (#) are the x "
+      "positions in the error-distribution charts.</p>\n"
       "<table><tr><th>#</th><th>measurement</th><th>kind</th><th>ISO class</th><th>limit "
-      "(mm)</th><th>n</th>"
-      "<th>missing</th><th>flagged</th><th>bias (mm)</th><th>SD (mm)</th><th>95 % CI of the mean "
-      "(mm)</th>"
-      "<th>MAE (mm)</th><th>max |error| (mm)</th><th>verdict</th><th>plot</th></tr>\n";
+      "(mm)</th><th>n</th><th>missing</th><th>flagged</th><th>bias (mm)</th><th>SD (mm)</th>"
+      "<th>95 % CI of the mean (mm)</th><th>limits of agreement (mm)</th><th>MAE (mm)</th>"
+      "<th>max |error| (mm)</th><th>verdict</th><th>plots</th></tr>\n";
   // Charts number the measurements within their class.
   std::map<IsoClass, int> counter;
   for (const MeasurementSummary& m : report.summary.measurements) {
     const ErrorStats& s = m.stats;
     const int number = m.differences_mm.empty() ? 0 : ++counter[m.iso_class];
-    const std::string hist = "plots/hist_" + m.name + ".png";
-    const bool has_hist = std::find(plots.begin(), plots.end(), hist) != plots.end();
+    std::string links = PlotLink(plots, "plots/hist_" + m.name + ".png", "histogram");
+    const std::string bland_altman =
+        PlotLink(plots, "plots/bland_altman_" + m.name + ".png", "Bland-Altman");
+    if (!bland_altman.empty()) links += (links.empty() ? "" : ", ") + bland_altman;
     html += "<tr>" + Td(number ? std::to_string(number) : "") + Td(XmlEscape(m.name)) +
             Td(XmlEscape(m.kind)) + Td(ToString(m.iso_class)) + Td(Num(m.tolerance_mm, 0)) +
             Td(std::to_string(s.n)) + Td(std::to_string(m.missing)) +
             Td(std::to_string(m.flagged)) + Td(Num(s.mean_mm, 2)) + Td(Num(s.sd_mm, 2)) +
             Td("[" + Num(s.ci_low_mm, 2) + ", " + Num(s.ci_high_mm, 2) + "]") +
+            Td("[" + Num(s.loa_low_mm, 2) + ", " + Num(s.loa_high_mm, 2) + "]") +
             Td(Num(s.mae_mm, 2)) + Td(Num(s.max_abs_mm, 2)) + Verdict(ToString(m.verdict)) +
-            Td(has_hist ? "<a href=\"" + XmlEscape(hist) + "\">histogram</a>" : "") + "</tr>\n";
+            Td(links) + "</tr>\n";
+  }
+  return html + "</table>\n";
+}
+
+std::string RepeatabilityTable(const std::vector<RepeatabilityRow>& rows) {
+  std::string html =
+      "<h2>Repeatability</h2>\n<p>From the subjects scanned more than once. Within-subject SD: "
+      "the pooled SD of one subject's repeated values; repeatability coefficient: 1.96 &times; "
+      "&radic;2 &times; that SD, the difference two scans of one subject stay within for 95 % of "
+      "pairs. Per-scan values: <a href=\"scans/summary.csv\">scans/summary.csv</a>.</p>\n"
+      "<table><tr><th>measurement</th><th>subjects</th><th>scans</th><th>within-subject SD "
+      "(mm)</th><th>repeatability coefficient (mm)</th></tr>\n";
+  for (const RepeatabilityRow& r : rows) {
+    html += "<tr>" + Td(XmlEscape(r.name)) + Td(std::to_string(r.stats.subjects)) +
+            Td(std::to_string(r.stats.values)) + Td(Num(r.stats.within_sd_mm, 2)) +
+            Td(Num(r.stats.coefficient_mm, 2)) + "</tr>\n";
+  }
+  return html + "</table>\n";
+}
+
+// Rows of plain text cells under `heading` (nothing when `rows` is empty).
+std::string TextTable(const std::string& heading, const std::vector<std::string>& header,
+                      const std::vector<std::vector<std::string>>& rows) {
+  if (rows.empty()) return "";
+  std::string html = "<h2>" + heading + "</h2>\n<table class=\"text\"><tr>";
+  for (const std::string& h : header) html += "<th>" + XmlEscape(h) + "</th>";
+  html += "</tr>\n";
+  for (const std::vector<std::string>& row : rows) {
+    html += "<tr>";
+    for (const std::string& cell : row) html += Td(XmlEscape(cell));
+    html += "</tr>\n";
   }
   return html + "</table>\n";
 }
@@ -130,6 +172,20 @@ std::string PostureTable(const PostureComparison& p) {
   return html + "</table>\n";
 }
 
+std::string TableLinks(const AccuracyReport& report) {
+  std::vector<std::string> files = {"summary.csv", "measurements.csv"};
+  if (!report.summary.landmarks.empty())
+    files.insert(files.end(), {"landmarks.csv", "landmark_errors.csv"});
+  if (report.posture) files.push_back("posture.csv");
+  if (!report.repeatability.empty()) files.push_back("repeatability.csv");
+  if (!report.not_compared.empty()) files.push_back("not_compared.csv");
+  files.push_back("report.json");
+  std::string links;
+  for (const std::string& f : files)
+    links += (links.empty() ? "" : ", ") + std::string("<a href=\"") + f + "\">" + f + "</a>";
+  return links;
+}
+
 std::string Image(const std::string& file) {
   return "<figure><img src=\"" + XmlEscape(file) + "\" alt=\"" + XmlEscape(file) + "\"></figure>\n";
 }
@@ -143,23 +199,20 @@ std::string AccuracyHtml(const AccuracyReport& report, const std::vector<std::st
       "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:3px 8px;"
       "text-align:right}td:nth-child(-n+4),th{text-align:left}.pass{background:#dfd}.fail{"
       "background:#fdd}"
-      ".na{background:#eee}img{max-width:100%}pre{background:#f6f6f6;padding:1em}</style></"
+      ".na{background:#eee}table.text "
+      "td{text-align:left}img{max-width:100%}pre{background:#f6f6f6;padding:1em}</style></"
       "head><body>\n";
   html += "<h1>" + XmlEscape(report.title) + "</h1>\n<p>Created " + XmlEscape(report.created_utc) +
           "; " + std::to_string(report.summary.subjects) + " subjects compared, " +
-          std::to_string(report.failures.size()) +
-          " failed. Tables: <a href=\"summary.csv\">summary.csv</a>, "
-          "<a href=\"measurements.csv\">measurements.csv</a>, <a "
-          "href=\"landmarks.csv\">landmarks.csv</a>, "
-          "<a href=\"landmark_errors.csv\">landmark_errors.csv</a>" +
-          (report.posture ? ", <a href=\"posture.csv\">posture.csv</a>" : "") +
-          ", <a href=\"report.json\">report.json</a>.</p>\n";
+          std::to_string(report.failures.size()) + " failed. Tables: " + TableLinks(report) +
+          ".</p>\n";
   html += Targets(report);
   for (const std::string& plot : plots) {
     if (plot.rfind("plots/errors_", 0) == 0) html += Image(plot);
   }
   html += MeasurementTable(report, plots);
-  html += LandmarkTable(report);
+  if (!report.repeatability.empty()) html += RepeatabilityTable(report.repeatability);
+  if (!report.summary.landmarks.empty()) html += LandmarkTable(report);
   if (std::find(plots.begin(), plots.end(), "plots/landmarks.png") != plots.end()) {
     html += Image("plots/landmarks.png");
   }
@@ -169,16 +222,16 @@ std::string AccuracyHtml(const AccuracyReport& report, const std::vector<std::st
       html += Image("plots/posture.png");
     }
   }
-  if (!report.failures.empty()) {
-    html +=
-        "<h2>Subjects that "
-        "failed</h2>\n<table><tr><th>subject</th><th>stage</th><th>error</th></tr>\n";
-    for (const SubjectFailure& f : report.failures) {
-      html += "<tr><td>" + XmlEscape(f.subject) + "</td><td>" + XmlEscape(f.stage) + "</td><td>" +
-              XmlEscape(f.error) + "</td></tr>\n";
-    }
-    html += "</table>\n";
-  }
+  std::vector<std::vector<std::string>> failures, not_compared, mapped;
+  for (const SubjectFailure& f : report.failures) failures.push_back({f.subject, f.stage, f.error});
+  for (const NotCompared& n : report.not_compared)
+    not_compared.push_back({n.subject, n.measurement, n.where, n.reason});
+  for (const MappedName& m : report.mapped_names)
+    mapped.push_back({m.their_name, m.measurement, std::to_string(m.rows), m.note});
+  html += TextTable("Subjects that failed", {"subject", "stage", "error"}, failures);
+  html += TextTable("Not compared", {"subject", "measurement", "where", "reason"}, not_compared);
+  html += TextTable("Names mapped",
+                    {"their name", "measurement", "rows", "how the definitions differ"}, mapped);
   html +=
       "<h2>Settings</h2>\n<pre>" + XmlEscape(report.settings.dump(2)) + "</pre>\n</body></html>\n";
   return html;

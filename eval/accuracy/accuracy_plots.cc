@@ -31,9 +31,10 @@ Series HorizontalLine(double y, double x0, double x1, const std::string& label) 
 // Every subject's difference (points), the bias (points) and its 95 % CI
 // (vertical segments) per measurement of one ISO class, with the limits.
 void StripChart(const std::vector<const MeasurementSummary*>& measurements, IsoClass iso_class,
-                const fs::path& file) {
+                const std::string& reference_label, const fs::path& file) {
   Chart chart;
-  chart.title = "Error distribution: " + ToString(iso_class) + " (measured - truth)";
+  chart.title =
+      "Error distribution: " + ToString(iso_class) + " (measured - " + reference_label + ")";
   chart.x_label = "measurement (number as in the table)";
   chart.y_label = "error (mm)";
   Series subjects{"subjects", {}, {}, Series::Style::kPoints, kSubjects};
@@ -76,10 +77,11 @@ void StripChart(const std::vector<const MeasurementSummary*>& measurements, IsoC
   WriteChart(chart, file);
 }
 
-void HistogramChart(const MeasurementSummary& m, const fs::path& file) {
+void HistogramChart(const MeasurementSummary& m, const std::string& reference_label,
+                    const fs::path& file) {
   Chart chart;
   chart.title = m.name + " (" + ToString(m.iso_class) + ")";
-  chart.x_label = "measured - truth (mm)";
+  chart.x_label = "measured - " + reference_label + " (mm)";
   chart.y_label = "subjects";
   chart.width_px = 480;
   chart.height_px = 300;
@@ -98,6 +100,52 @@ void HistogramChart(const MeasurementSummary& m, const fs::path& file) {
   chart.series.push_back(
       {"", {m.tolerance_mm, m.tolerance_mm}, {0, top}, Series::Style::kLine, kLimit});
   chart.series.back().dashed = true;
+  WriteChart(chart, file);
+}
+
+// Bland-Altman plot: each subject's difference against the mean of its
+// measured and reference values, with the bias, the 95 % limits of agreement
+// and the ISO 20685-1 limit.
+void BlandAltmanChart(const MeasurementSummary& m, const std::string& reference_label,
+                      const fs::path& file) {
+  Chart chart;
+  chart.title = m.name + ": Bland-Altman";
+  chart.x_label = "mean of measured and " + reference_label + " (mm)";
+  chart.y_label = "measured - " + reference_label + " (mm)";
+  chart.width_px = 560;
+  chart.height_px = 380;
+  double x0 = m.means_mm.front(), x1 = x0;
+  for (double x : m.means_mm) x0 = std::min(x0, x), x1 = std::max(x1, x);
+  const double pad = std::max(1.0, 0.05 * (x1 - x0));
+  x0 -= pad;
+  x1 += pad;
+  Series subjects{"subjects", m.means_mm, m.differences_mm, Series::Style::kPoints, kSubjects};
+  Series bias =
+      HorizontalLine(m.stats.mean_mm, x0, x1, "bias " + FormatNumber(m.stats.mean_mm, 1) + " mm");
+  bias.dashed = false;
+  bias.color = kBias;
+  chart.series = {subjects, bias};
+  if (std::isfinite(m.stats.loa_low_mm)) {
+    Series low =
+        HorizontalLine(m.stats.loa_low_mm, x0, x1, "limits of agreement (bias +/- 1.96 SD)");
+    low.color = kCi;
+    Series high = HorizontalLine(m.stats.loa_high_mm, x0, x1, "");
+    high.color = kCi;
+    chart.series.insert(chart.series.end(), {low, high});
+  }
+  chart.series.push_back(HorizontalLine(
+      m.tolerance_mm, x0, x1, "ISO 20685-1 limit +/-" + FormatNumber(m.tolerance_mm, 0) + " mm"));
+  chart.series.push_back(HorizontalLine(-m.tolerance_mm, x0, x1, ""));
+  double lo = -m.tolerance_mm, hi = m.tolerance_mm;
+  for (double y : m.differences_mm) lo = std::min(lo, y), hi = std::max(hi, y);
+  for (double y : {m.stats.loa_low_mm, m.stats.loa_high_mm}) {
+    if (std::isfinite(y)) lo = std::min(lo, y), hi = std::max(hi, y);
+  }
+  // Room at the top for the legend.
+  chart.y_min = lo - 0.08 * (hi - lo);
+  chart.y_max = hi + 0.45 * (hi - lo);
+  chart.x_min = x0;
+  chart.x_max = x1;
   WriteChart(chart, file);
 }
 
@@ -166,14 +214,17 @@ std::vector<std::string> WriteAccuracyPlots(const AccuracyReport& report, const 
     }
     if (chosen.empty()) continue;
     const std::string name = "plots/errors_" + ToString(c) + ".png";
-    StripChart(chosen, c, dir / name);
+    StripChart(chosen, c, report.reference_label, dir / name);
     written.push_back(name);
   }
   for (const MeasurementSummary& m : report.summary.measurements) {
     if (m.differences_mm.empty()) continue;
     const std::string name = "plots/hist_" + m.name + ".png";
-    HistogramChart(m, dir / name);
+    HistogramChart(m, report.reference_label, dir / name);
     written.push_back(name);
+    const std::string bland_altman = "plots/bland_altman_" + m.name + ".png";
+    BlandAltmanChart(m, report.reference_label, dir / bland_altman);
+    written.push_back(bland_altman);
   }
   const bool any_landmark =
       std::any_of(report.summary.landmarks.begin(), report.summary.landmarks.end(),

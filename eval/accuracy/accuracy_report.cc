@@ -31,7 +31,9 @@ json NumberOrNull(double v) { return std::isfinite(v) ? json(v) : json(nullptr);
 
 void WriteMeasurementsCsv(const AccuracyReport& report, const fs::path& file) {
   std::ostringstream out;
-  out << "subject,measurement,kind,truth_mm,measured_mm,difference_mm,missing,flags,truth_flags\n";
+  const std::string& label = report.reference_label;
+  out << "subject,measurement,kind," << label << "_mm,measured_mm,difference_mm,missing,flags,"
+      << label << "_flags\n";
   for (const SubjectComparison& s : report.subjects) {
     for (const MeasurementDifference& d : s.measurements) {
       out << Cell(s.subject) << ',' << Cell(d.name) << ',' << d.kind << ','
@@ -45,15 +47,17 @@ void WriteMeasurementsCsv(const AccuracyReport& report, const fs::path& file) {
 
 void WriteSummaryCsv(const AccuracyReport& report, const fs::path& file) {
   std::ostringstream out;
-  out << "measurement,kind,iso_class,tolerance_mm,n,missing,flagged,truth_flagged,bias_mm,sd_mm,"
-         "ci_low_mm,ci_high_mm,mae_mm,max_abs_mm,median_abs_mm,verdict\n";
+  out << "measurement,kind,iso_class,tolerance_mm,n,missing,flagged," << report.reference_label
+      << "_flagged,bias_mm,sd_mm,ci_low_mm,ci_high_mm,loa_low_mm,loa_high_mm,mae_mm,max_abs_mm,"
+         "median_abs_mm,verdict\n";
   for (const MeasurementSummary& m : report.summary.measurements) {
     const ErrorStats& s = m.stats;
     out << Cell(m.name) << ',' << m.kind << ',' << ToString(m.iso_class) << ','
         << FormatNumber(m.tolerance_mm, 0) << ',' << s.n << ',' << m.missing << ',' << m.flagged
         << ',' << m.truth_flagged << ',' << FormatNumber(s.mean_mm, 3) << ','
         << FormatNumber(s.sd_mm, 3) << ',' << FormatNumber(s.ci_low_mm, 3) << ','
-        << FormatNumber(s.ci_high_mm, 3) << ',' << FormatNumber(s.mae_mm, 3) << ','
+        << FormatNumber(s.ci_high_mm, 3) << ',' << FormatNumber(s.loa_low_mm, 3) << ','
+        << FormatNumber(s.loa_high_mm, 3) << ',' << FormatNumber(s.mae_mm, 3) << ','
         << FormatNumber(s.max_abs_mm, 3) << ',' << FormatNumber(s.median_abs_mm, 3) << ','
         << ToString(m.verdict) << '\n';
   }
@@ -96,6 +100,53 @@ void WritePostureCsv(const PostureComparison& posture, const fs::path& file) {
   WriteFileAtomically(file, out.str());
 }
 
+void WriteRepeatabilityCsv(const std::vector<RepeatabilityRow>& rows, const fs::path& file) {
+  std::ostringstream out;
+  out << "measurement,subjects,scans,within_subject_sd_mm,repeatability_coefficient_mm\n";
+  for (const RepeatabilityRow& r : rows) {
+    out << Cell(r.name) << ',' << r.stats.subjects << ',' << r.stats.values << ','
+        << FormatNumber(r.stats.within_sd_mm, 3) << ',' << FormatNumber(r.stats.coefficient_mm, 3)
+        << '\n';
+  }
+  WriteFileAtomically(file, out.str());
+}
+
+void WriteNotComparedCsv(const std::vector<NotCompared>& rows, const fs::path& file) {
+  std::ostringstream out;
+  out << "subject,measurement,where,reason\n";
+  for (const NotCompared& r : rows) {
+    out << Cell(r.subject) << ',' << Cell(r.measurement) << ',' << Cell(r.where) << ','
+        << Cell(r.reason) << '\n';
+  }
+  WriteFileAtomically(file, out.str());
+}
+
+json ExtrasJson(const AccuracyReport& report) {
+  json repeatability = json::array(), not_compared = json::array(), mapped = json::array();
+  for (const RepeatabilityRow& r : report.repeatability) {
+    repeatability.push_back(
+        {{"measurement", r.name},
+         {"subjects", r.stats.subjects},
+         {"scans", r.stats.values},
+         {"within_subject_sd_mm", NumberOrNull(r.stats.within_sd_mm)},
+         {"repeatability_coefficient_mm", NumberOrNull(r.stats.coefficient_mm)}});
+  }
+  for (const NotCompared& r : report.not_compared) {
+    not_compared.push_back({{"subject", r.subject},
+                            {"measurement", r.measurement},
+                            {"where", r.where},
+                            {"reason", r.reason}});
+  }
+  for (const MappedName& m : report.mapped_names) {
+    mapped.push_back({{"their_name", m.their_name},
+                      {"measurement", m.measurement},
+                      {"note", m.note},
+                      {"rows", m.rows}});
+  }
+  return {
+      {"repeatability", repeatability}, {"not_compared", not_compared}, {"mapped_names", mapped}};
+}
+
 json ReportJson(const AccuracyReport& report) {
   const AccuracySummary& s = report.summary;
   json verdicts = json::object();
@@ -108,6 +159,7 @@ json ReportJson(const AccuracyReport& report) {
       {"format", "bespoke-accuracy-report"},
       {"version", 1},
       {"created_utc", report.created_utc},
+      {"reference", report.reference_label},
       {"settings", report.settings},
       {"subjects_compared", s.subjects},
       {"subjects_failed", report.failures.size()},
@@ -117,6 +169,7 @@ json ReportJson(const AccuracyReport& report) {
       {"median_landmark_error_mm", NumberOrNull(s.median_landmark_error_mm)},
       {"landmark_frame", s.landmark_frame},
       {"verdicts", verdicts}};
+  out.update(ExtrasJson(report));
   if (report.posture) {
     const PostureComparison& p = *report.posture;
     out["posture"] = {{"pose_a", p.pose_a},
@@ -146,8 +199,12 @@ void WriteAccuracyReport(const AccuracyReport& report, const fs::path& dir) {
   CreateDirectories(dir);
   WriteMeasurementsCsv(report, dir / "measurements.csv");
   WriteSummaryCsv(report, dir / "summary.csv");
-  WriteLandmarkCsvs(report, dir);
+  if (!report.summary.landmarks.empty()) WriteLandmarkCsvs(report, dir);
   if (report.posture) WritePostureCsv(*report.posture, dir / "posture.csv");
+  if (!report.repeatability.empty())
+    WriteRepeatabilityCsv(report.repeatability, dir / "repeatability.csv");
+  if (!report.not_compared.empty())
+    WriteNotComparedCsv(report.not_compared, dir / "not_compared.csv");
   WriteJsonFile(dir / "settings.json", report.settings);
   WriteJsonFile(dir / "report.json", ReportJson(report));
   const std::vector<std::string> plots = WriteAccuracyPlots(report, dir);

@@ -57,6 +57,7 @@ AccuracySummary SummarizeAccuracy(const std::vector<SubjectComparison>& subjects
         ++m.missing;
       } else {
         m.differences_mm.push_back(d.difference_mm);
+        m.means_mm.push_back(0.5 * (d.measured_mm + d.truth_mm));
       }
       if (!d.flags.empty()) ++m.flagged;
       if (!d.truth_flags.empty()) ++m.truth_flagged;

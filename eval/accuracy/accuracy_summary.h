@@ -1,7 +1,7 @@
 // The accuracy of many subjects at once: per measurement the error
 // statistics over the subjects (accuracy_stats.h) and the ISO 20685-1
 // verdict (iso_20685.h); per landmark the 3-D error statistics; and the
-// headline figures the issue sets targets for (every measurement passes,
+// headline figures the report sets targets for (every measurement passes,
 // MAE of the large girths, median landmark error).
 //
 // Input: the per-subject comparisons (compare.h) of the subjects that ran,
@@ -33,6 +33,7 @@ struct MeasurementSummary {
   int truth_flagged = 0;    // subjects whose truth value carried flags
   IsoVerdict verdict = IsoVerdict::kNotJudged;
   std::vector<double> differences_mm;  // the values summarised, subject order
+  std::vector<double> means_mm;  // (measured + reference) / 2 of the same subjects (Bland-Altman x)
 };
 
 struct LandmarkSummary {

@@ -42,6 +42,9 @@ TEST(AccuracyStats, HandComputedValues) {
   EXPECT_DOUBLE_EQ(s.mae_mm, 3);
   EXPECT_DOUBLE_EQ(s.max_abs_mm, 5);
   EXPECT_DOUBLE_EQ(s.median_abs_mm, 3);
+  // Limits of agreement 3 -/+ 1.959964 * 1.581139.
+  EXPECT_NEAR(s.loa_low_mm, -0.098975, 1e-5);
+  EXPECT_NEAR(s.loa_high_mm, 6.098975, 1e-5);
   // -2, 0, 2, 4: mean 1, |e| = 2, 0, 2, 4 (MAE 2, median 2), SD sqrt(20/3), t(3) = 3.182446.
   s = SummarizeErrors({-2, 0, 2, 4});
   EXPECT_DOUBLE_EQ(s.mean_mm, 1);
@@ -63,6 +66,21 @@ TEST(AccuracyStats, SmallSamplesAndBadValues) {
   EXPECT_TRUE(std::isnan(SummarizeErrors({}).mean_mm));
   EXPECT_THROW(SummarizeErrors({1, NAN}), InputError);
   EXPECT_DOUBLE_EQ(Median({4, 1, 3, 2}), 2.5);
+}
+
+TEST(AccuracyStats, RepeatabilityByHand) {
+  // 100, 102 (mean 101, squares 2, 1 dof); 200, 203, 206 (mean 203, squares
+  // 18, 2 dof); 300 alone says nothing. Pooled variance 20 / 3.
+  const RepeatabilityStats r = SummarizeRepeatability({{100, 102}, {200, 203, 206}, {300}});
+  EXPECT_EQ(r.subjects, 2);
+  EXPECT_EQ(r.values, 5);
+  EXPECT_NEAR(r.within_sd_mm, 2.581989, 1e-6);
+  EXPECT_NEAR(r.coefficient_mm, 2.771808 * 2.581989, 1e-5);  // 1.959964 * sqrt(2) * SD
+  const RepeatabilityStats none = SummarizeRepeatability({{1}, {}});
+  EXPECT_EQ(none.subjects, 0);
+  EXPECT_TRUE(std::isnan(none.within_sd_mm));
+  EXPECT_TRUE(std::isnan(none.coefficient_mm));
+  EXPECT_THROW(SummarizeRepeatability({{1, std::nan("")}}), InputError);
 }
 
 TEST(Iso20685, CataloguesClassesAndLimits) {
@@ -279,15 +297,20 @@ TEST(WriteAccuracyReport, WritesEveryFile) {
   for (const char* file :
        {"index.html", "summary.csv", "measurements.csv", "landmarks.csv", "landmark_errors.csv",
         "posture.csv", "settings.json", "report.json", "plots/errors_large_girth.png",
-        "plots/hist_bust_girth.png", "plots/landmarks.png"}) {
+        "plots/hist_bust_girth.png", "plots/bland_altman_bust_girth.png", "plots/landmarks.png"}) {
     EXPECT_TRUE(fs::exists(dir / file)) << file;
   }
+  // Nothing the report does not have: no repeated scans, nothing left out.
+  EXPECT_FALSE(fs::exists(dir / "repeatability.csv"));
+  EXPECT_FALSE(fs::exists(dir / "not_compared.csv"));
   const std::string summary = ReadText(dir / "summary.csv");
   EXPECT_NE(summary.find("bust_girth,girth,large_girth,9,3,0,3,0,-2.000,4.000,"), std::string::npos)
       << summary;
   const std::string html = ReadText(dir / "index.html");
   EXPECT_NE(html.find("too few points"), std::string::npos);
   EXPECT_NE(html.find("plots/errors_large_girth.png"), std::string::npos);
+  EXPECT_NE(html.find("plots/bland_altman_bust_girth.png"), std::string::npos);
+  EXPECT_NE(html.find("measured &minus; truth"), std::string::npos);
   const json r = ReadJsonFile(dir / "report.json");
   EXPECT_EQ(r["subjects_failed"], 1);
   EXPECT_EQ(r["verdicts"]["stature"], "pass");

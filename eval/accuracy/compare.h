@@ -1,5 +1,7 @@
 // One subject's measurements compared with its truth, both as measurement
-// documents (docs/contracts.md: "bespoke-measurements", values in mm).
+// documents (docs/contracts.md: "bespoke-measurements", values in mm). The
+// truth is the oracle's exact one, or on real subjects a document of the
+// reference values (no datum points, so no landmark errors).
 //
 // Measurements: for every measurement of the truth document with a value,
 // measured - truth (mm); a measurement the measured document lacks (or gives

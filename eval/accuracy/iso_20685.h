@@ -2,8 +2,7 @@
 // anthropometric databases) judges a scanner-extracted measurement by the
 // mean difference to traditional measurement: the 95 % confidence interval
 // of that mean must lie within the maximum allowable error of the
-// measurement's class. The classes and limits used here (the and
-// the standard's Table 1 values, mm):
+// measurement's class. The classes and limits used here (mm):
 //   height        4 mm  every catalogue measurement of kind "height"
 //   small_girth   4 mm  neck, upper arm, elbow, wrist, thigh, knee, calf, ankle
 //   large_girth   9 mm  bust, chest, under-bust, waist, middle hip, hip
@@ -15,7 +14,8 @@
 // A girth is "large" when it goes round the trunk (catalogue side "centre"
 // or "both" and region torso/hip: bust, chest, under_bust, waist,
 // middle_hip, hip); the neck girth and every limb girth are "small".
-// Here the "traditional" value is the oracle's exact truth on the mesh.
+// The "traditional" value is the oracle's exact truth on the mesh, or on real
+// subjects the reference measurement (a tape, another scanner).
 #ifndef BESPOKE_EVAL_ACCURACY_ISO_20685_H_
 #define BESPOKE_EVAL_ACCURACY_ISO_20685_H_
 

@@ -33,7 +33,7 @@ struct PostureRow {
 struct PostureComparison {
   std::string pose_a = "A-pose", pose_b = "T-pose";  // labels
   double arm_a_deg = 0, arm_b_deg = 0;               // arm abduction of each pose (reporting only)
-  double tolerance_mm = 5;                           // default 5 mm (the target)
+  double tolerance_mm = 5;                           // default 5 mm: |B - A| allowed per length
   std::vector<PostureRow> rows;
   int judged = 0, passed = 0;        // lengths judged / within tolerance
   double max_abs_difference_mm = 0;  // over judged lengths with values; NaN if none
