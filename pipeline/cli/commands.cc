@@ -61,8 +61,8 @@ const std::vector<Command>& AllCommands() {
       {"draft", "Draft a built-in design (shirt, trousers) directly for a body's measurements",
        &SetupDraftCommand},
       {"accuracy",
-       "Accuracy report: N oracle subjects scanned, measured and compared with their truth (ISO "
-       "20685-1)",
+       "ISO 20685-1 accuracy report: oracle subjects against their truth (--subjects), or real "
+       "subjects' scans against a tape (--scans)",
        &SetupAccuracyCommand},
   };
   return commands;
