@@ -134,20 +134,20 @@ TEST(NameMap, TheirNamesAreMappedWithTheirNotes) {
   const NameMap map = LoadNameMap("freesewing", Catalogue::Builtin());
   const fs::path file = Write(dir, "REF.csv",
                               "subject,measurement,value_mm\n"
-                              "a,waistToFloor,1020\n"    // line 2: mapped, with a note
-                              "a,Chest,930\n"            // 3: ignoring case
-                              "a,head,560\n"             // 4: no counterpart
-                              "a,stature,1700\n"         // 5: catalogue names still work
-                              "a,waistToFloor,1020\n");  // 6: a duplicate after mapping
+                              "a,biceps,310\n"    // line 2: mapped, with a note
+                              "a,Chest,930\n"     // 3: ignoring case
+                              "a,head,560\n"      // 4: no counterpart
+                              "a,stature,1700\n"  // 5: catalogue names still work
+                              "a,biceps,310\n");  // 6: a duplicate after mapping
   const ReferenceTable t = Read(file, &map);
   ASSERT_EQ(t.values.size(), 3u);
-  EXPECT_EQ(t.values[0].measurement, "waist_height");
+  EXPECT_EQ(t.values[0].measurement, "upper_arm_girth");
   EXPECT_EQ(t.values[1].measurement, "bust_girth");
   EXPECT_EQ(t.values[2].measurement, "stature");
   EXPECT_NE(ReasonFor(t, 4).find("no Bespoke counterpart"), std::string::npos);
   EXPECT_NE(ReasonFor(t, 6).find("duplicate of line 2"), std::string::npos);
   ASSERT_EQ(t.mapped_names.size(), 3u);
-  EXPECT_EQ(t.mapped_names[0].their_name, "waistToFloor");
+  EXPECT_EQ(t.mapped_names[0].their_name, "biceps");
   EXPECT_EQ(t.mapped_names[0].rows, 2);
   EXPECT_FALSE(t.mapped_names[0].note.empty());
   EXPECT_TRUE(t.mapped_names[1].note.empty());  // chest: the definitions agree
