@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Reliability evidence for `bespoke batch` (issue 8, docs/batch.md):
+# Reliability evidence for `bespoke batch` (docs/batch.md):
 #   1. 100 inputs: 90 generated scans + 10 malformed/hostile files (truncated,
 #      huge count, all NaN, zero points, empty, garbage, header lying about its
 #      types, a folder named like a scan, a FIFO, a dangling symlink). Every good

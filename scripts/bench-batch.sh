@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Batch throughput benchmark (issue 8): SCANS generated scans of POINTS
+# Batch throughput benchmark (docs/batch.md): SCANS generated scans of POINTS
 # points each, through `bespoke batch` (every step of `bespoke run` that this
 # build has: see the "steps" line printed) with --jobs 1 and --jobs 2, fresh
 # output folders each time. Prints scans per minute and the speed-up, and

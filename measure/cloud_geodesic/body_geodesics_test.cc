@@ -100,7 +100,7 @@ TEST(BodyGeodesics, DatumPointLengthsOnAVirtualScanMatchExactMeshGeodesics) {
   // was merely snapped to the nearest rim point).
   EXPECT_EQ(unreachable, 0);
   EXPECT_LE(worst_all, 25.0);
-  EXPECT_LE(sum / compared, 2.0);  // mm, the target
+  EXPECT_LE(sum / compared, 2.0);  // mm, the target of docs/geodesics.md
   EXPECT_LE(worst, 5.0);           // mm (ISO 20685-1 allows 5 mm for segment lengths)
 }
 

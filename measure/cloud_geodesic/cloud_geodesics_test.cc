@@ -199,9 +199,9 @@ TEST(CloudGeodesics, DistanceFieldOnTheSphere) {
 // Distance fields on noisy spheres (1.5 mm spacing, 0.5 mm noise along the
 // normal): every point is reached and every point at least 10 mm from the
 // source is within 3 % of the great-circle distance (mean within 0.5 %). Cells
-// holding a few noisy points used to fit planes tilted into the tangent
-// plane, link to nothing and leave islands (21 points unreached and a 21 %
-// error with seed 1 before min_seed_points).
+// holding only a few noisy points fit planes tilted into the tangent plane,
+// link to nothing and leave islands; min_seed_points guards against that
+// (seed 1 shows it).
 TEST(CloudGeodesics, NoisySphereFieldReachesEveryPointWithinThreePercent) {
   const double r = 80;
   for (const std::uint32_t seed : {1u, 2u, 3u}) {

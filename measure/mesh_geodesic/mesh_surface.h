@@ -2,7 +2,7 @@
 // validated, with the adjacency the propagation and the projection walk need,
 // and the tangent planes of the geodesic curvature flow (Eq 3.13-3.17).
 //
-// Validation (MeshPrepOptions, the list of bad meshes):
+// Validation (MeshPrepOptions; every kind of bad mesh):
 //   - non-manifold edges (an edge used by more than two faces): REJECTED with
 //     InputError "<name>: ..." naming an example edge - the projection walk
 //     (Algorithm 1) crosses faces through edges and needs at most two per edge;

@@ -1,4 +1,4 @@
-// Mesh preparation: every kind of bad mesh the issue lists is either rejected
+// Mesh preparation: every kind of bad mesh is either rejected
 // with an InputError naming the mesh and the problem, or handled as
 // documented in mesh_surface.h; nothing crashes.
 #include "measure/mesh_geodesic/mesh_surface.h"

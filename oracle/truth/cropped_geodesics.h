@@ -39,9 +39,8 @@ namespace bespoke {
 
 struct CroppedGeodesicsOptions {
   // First crop: R = initial_ratio * |a - b| + initial_margin (mesh units).
-  double initial_ratio =
-      1.05;  // default 1.05 (with 1.0 the fastest of 1.0-1.3 on bodies, truth_bench)
-  double initial_margin = 20;  // default 20 (mm on a body)
+  double initial_ratio = 1.05;  // default 1.05 (truth_bench compares 1.0-1.3 on bodies)
+  double initial_margin = 20;   // default 20 (mm on a body)
   // Throws InputError when initial_ratio < 1 or initial_margin < 0.
   void Check() const;
 };

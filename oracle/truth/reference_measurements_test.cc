@@ -1,9 +1,8 @@
 // The reference measurements against what the parametric body knows by
-// construction: every girth against its analytic perimeter (issue 3: within
-// 0.5 mm), heights and the shoulder breadth exactly, lengths bounded by the
-// straight-line chain and equal left and right; and the flags on bodies made
-// to trip them. Each TEST is its own process under ctest, so the default
-// body's reference (about 2 s of CPU) is computed in one TEST.
+// construction: every girth against its analytic perimeter (within 0.5 mm), heights and the
+// shoulder breadth exactly, lengths bounded by the straight-line chain and equal left and right;
+// and the flags on bodies made to trip them. Each TEST is its own process under ctest, so the
+// default body's reference (about 2 s of CPU) is computed in one TEST.
 #include "oracle/truth/reference_measurements.h"
 
 #include <gtest/gtest.h>
