@@ -171,6 +171,43 @@ void KeepPoseAndResolution(const ParametricBodyOptions& from, ParametricBodyOpti
   to->max_girth_deficit_mm = from.max_girth_deficit_mm;
 }
 
+// How far each girth of a drawn body strays from the build (relative SDs of
+// the jitter factors; bust_ratio is a woman's bust over her under-bust).
+struct GirthSpread {
+  double belly, hips, neck, under_bust, chest, bust_ratio, bust, middle_hip;
+  double upper_arm, wrist, thigh, knee, calf, ankle;
+  bool middle_hip_at_least_waist;  // a belly over the hips keeps the middle hip >= the waist
+};
+constexpr GirthSpread kDefaultSpread{0.06, 0.04, 0.03, 0.03, 0.02, 1.19, 0.04, 0.02,
+                                     0.04, 0.03, 0.03, 0.03, 0.04, 0.03, false};
+constexpr GirthSpread kFullSpread{0.12, 0.08, 0.05, 0.05, 0.03, 1.2,  0.08, 0.02,
+                                  0.08, 0.05, 0.05, 0.05, 0.06, 0.05, true};
+
+// Scales the girths of `o` (a sex's average body) by the build: trunk girths
+// share it, the belly and hips vary on their own too. `jitter(sd)` draws a
+// factor 1 + sd * (clipped normal); the draw order is part of the seed's body.
+void DrawGirths(const GirthSpread& sd, bool man, double build, double girth_scale,
+                const std::function<double(double)>& jitter, ParametricBodyOptions* o) {
+  const double belly = jitter(sd.belly), hips = jitter(sd.hips);
+  o->neck_girth_mm *= girth_scale * jitter(sd.neck);
+  o->under_bust_girth_mm *= girth_scale * jitter(sd.under_bust);
+  o->chest_girth_mm = o->under_bust_girth_mm * (man ? 1.087 : 1.154) * jitter(sd.chest);
+  o->bust_girth_mm =
+      man ? o->chest_girth_mm : o->under_bust_girth_mm * (sd.bust_ratio * jitter(sd.bust));
+  o->waist_girth_mm *= girth_scale * belly * (build > 1 ? build : 1.0);
+  o->hip_girth_mm *= girth_scale * hips;
+  const double middle = 0.5 * (o->waist_girth_mm + o->hip_girth_mm);
+  o->middle_hip_girth_mm =
+      (sd.middle_hip_at_least_waist ? std::max(middle, o->waist_girth_mm) : middle) *
+      jitter(sd.middle_hip);
+  o->upper_arm_girth_mm *= girth_scale * jitter(sd.upper_arm);
+  o->wrist_girth_mm *= std::sqrt(girth_scale) * jitter(sd.wrist);
+  o->thigh_girth_mm *= girth_scale * hips * jitter(sd.thigh);
+  o->knee_girth_mm *= std::sqrt(girth_scale) * jitter(sd.knee);
+  o->calf_girth_mm *= std::sqrt(girth_scale) * jitter(sd.calf);
+  o->ankle_girth_mm *= std::sqrt(girth_scale) * jitter(sd.ankle);
+}
+
 // The "full" population: any stature of 1450-2050 mm, builds from very thin
 // to obese, and belly, hips and bust drawn apart from the build.
 ParametricBodyOptions FullRangeOptions(const ParametricBodyOptions& options) {
@@ -192,21 +229,7 @@ ParametricBodyOptions FullRangeOptions(const ParametricBodyOptions& options) {
     o.crotch_height_mm *= length_scale * jitter(0.03);
     o.shoulder_width_mm *= std::sqrt(girth_scale) * length_scale * jitter(0.05);
     o.stance_width_mm *= length_scale;
-    const double belly = jitter(0.12), hips = jitter(0.08);
-    o.neck_girth_mm *= girth_scale * jitter(0.05);
-    o.under_bust_girth_mm *= girth_scale * jitter(0.05);
-    o.chest_girth_mm = o.under_bust_girth_mm * (man ? 1.087 : 1.154) * jitter(0.03);
-    o.bust_girth_mm = man ? o.chest_girth_mm : o.under_bust_girth_mm * (1.2 * jitter(0.08));
-    o.waist_girth_mm *= girth_scale * belly * (build > 1 ? build : 1.0);
-    o.hip_girth_mm *= girth_scale * hips;
-    o.middle_hip_girth_mm =
-        std::max(0.5 * (o.waist_girth_mm + o.hip_girth_mm), o.waist_girth_mm) * jitter(0.02);
-    o.upper_arm_girth_mm *= girth_scale * jitter(0.08);
-    o.wrist_girth_mm *= std::sqrt(girth_scale) * jitter(0.05);
-    o.thigh_girth_mm *= girth_scale * hips * jitter(0.05);
-    o.knee_girth_mm *= std::sqrt(girth_scale) * jitter(0.05);
-    o.calf_girth_mm *= std::sqrt(girth_scale) * jitter(0.06);
-    o.ankle_girth_mm *= std::sqrt(girth_scale) * jitter(0.05);
+    DrawGirths(kFullSpread, man, build, girth_scale, jitter, &o);
     o.seed = 0;
     o.drawn_from_seed = options.seed;
     try {
@@ -235,13 +258,7 @@ ParametricBodyOptions SeededOptions(const ParametricBodyOptions& options,
   for (int attempt = 0; attempt < 1000; ++attempt) {
     const bool man = std::uniform_real_distribution<double>(0, 1)(rng) < 0.5;
     ParametricBodyOptions o = man ? ParametricBodyOptions::AverageMan() : ParametricBodyOptions();
-    // Keep pose, stance ratio and resolution.
-    o.arm_abduction_deg = options.arm_abduction_deg;
-    o.torso_segments = options.torso_segments;
-    o.arm_segments = options.arm_segments;
-    o.ring_spacing_mm = options.ring_spacing_mm;
-    o.girth_ring_segments = options.girth_ring_segments;
-    o.max_girth_deficit_mm = options.max_girth_deficit_mm;
+    KeepPoseAndResolution(options, &o);
     const double stature_scale = 1 + 0.038 * clipped();  // SD about 65 mm
     const double build = 1 + 0.10 * clipped();           // light to heavy
     const double length_scale = stature_scale;
@@ -252,21 +269,7 @@ ParametricBodyOptions SeededOptions(const ParametricBodyOptions& options,
     o.crotch_height_mm *= length_scale * jitter(0.02);
     o.shoulder_width_mm *= std::sqrt(girth_scale) * length_scale * jitter(0.03);
     o.stance_width_mm *= length_scale;
-    // Trunk girths share the build; the belly and hips vary on their own too.
-    const double belly = jitter(0.06), hips = jitter(0.04);
-    o.neck_girth_mm *= girth_scale * jitter(0.03);
-    o.under_bust_girth_mm *= girth_scale * jitter(0.03);
-    o.chest_girth_mm = o.under_bust_girth_mm * (man ? 1.087 : 1.154) * jitter(0.02);
-    o.bust_girth_mm = man ? o.chest_girth_mm : o.under_bust_girth_mm * (1.19 * jitter(0.04));
-    o.waist_girth_mm *= girth_scale * belly * (build > 1 ? build : 1.0);
-    o.hip_girth_mm *= girth_scale * hips;
-    o.middle_hip_girth_mm = 0.5 * (o.waist_girth_mm + o.hip_girth_mm) * jitter(0.02);
-    o.upper_arm_girth_mm *= girth_scale * jitter(0.04);
-    o.wrist_girth_mm *= std::sqrt(girth_scale) * jitter(0.03);
-    o.thigh_girth_mm *= girth_scale * hips * jitter(0.03);
-    o.knee_girth_mm *= std::sqrt(girth_scale) * jitter(0.03);
-    o.calf_girth_mm *= std::sqrt(girth_scale) * jitter(0.04);
-    o.ankle_girth_mm *= std::sqrt(girth_scale) * jitter(0.03);
+    DrawGirths(kDefaultSpread, man, build, girth_scale, jitter, &o);
     o.seed = 0;
     o.drawn_from_seed = options.seed;
     try {
