@@ -117,13 +117,7 @@ MakeHumanParameters MakeHumanDraw(const MakeHumanBodyOptions& o) {
   p.stature_mm = o.stature_mm.value_or(stature);
   p.cup = o.cup.value_or(random.Uniform(0.25, 0.85));
   p.firmness = o.firmness.value_or(random.Uniform(0.3, 0.8));
-  const double a = random.Uniform(0, 1), b = random.Uniform(0, 1), c = random.Uniform(0, 1);
-  p.african = o.african.value_or(a);
-  p.asian = o.asian.value_or(b);
-  p.caucasian = o.caucasian.value_or(c);
-  const double sum = p.african + p.asian + p.caucasian;
-  if (!(sum > 0)) throw InputError("makehuman: the ethnic weights are all 0");
-  p.african /= sum, p.asian /= sum, p.caucasian /= sum;
+  DrawMakeHumanEthnicWeights(o, &random, &p);
   for (const std::string& name : MakeHumanMeasureNames()) {
     const double drawn = random.Uniform(-o.measure_spread, o.measure_spread);
     const auto it = o.measure.find(name);

@@ -117,6 +117,17 @@ void AddMakeHumanShapeWeights(const std::map<std::string, double>& shape,
   }
 }
 
+void DrawMakeHumanEthnicWeights(const MakeHumanBodyOptions& o, MakeHumanRandom* random,
+                                MakeHumanParameters* p) {
+  const double a = random->Uniform(0, 1), b = random->Uniform(0, 1), c = random->Uniform(0, 1);
+  p->african = o.african.value_or(a);
+  p->asian = o.asian.value_or(b);
+  p->caucasian = o.caucasian.value_or(c);
+  const double sum = p->african + p->asian + p->caucasian;
+  if (!(sum > 0)) throw InputError("makehuman: the ethnic weights are all 0");
+  p->african /= sum, p->asian /= sum, p->caucasian /= sum;
+}
+
 MakeHumanParameters MakeHumanDrawFull(const MakeHumanBodyOptions& o) {
   // Its own stream: the default population's draws stay as they were.
   MakeHumanRandom random(o.seed * 0x9e3779b97f4a7c15ULL + 0x5bd1e995ULL);
@@ -135,13 +146,7 @@ MakeHumanParameters MakeHumanDrawFull(const MakeHumanBodyOptions& o) {
   p.stature_mm = o.stature_mm.value_or(stature);
   p.cup = o.cup.value_or(random.Uniform(0, 1));
   p.firmness = o.firmness.value_or(random.Uniform(0, 1));
-  const double a = random.Uniform(0, 1), b = random.Uniform(0, 1), c = random.Uniform(0, 1);
-  p.african = o.african.value_or(a);
-  p.asian = o.asian.value_or(b);
-  p.caucasian = o.caucasian.value_or(c);
-  const double sum = p.african + p.asian + p.caucasian;
-  if (!(sum > 0)) throw InputError("makehuman: the ethnic weights are all 0");
-  p.african /= sum, p.asian /= sum, p.caucasian /= sum;
+  DrawMakeHumanEthnicWeights(o, &random, &p);
   const double spread = o.measure_spread > 0 ? 2 * o.measure_spread : 0;  // 0.6 by default
   for (const std::string& name : MakeHumanMeasureNames()) {
     const double drawn = std::clamp(random.Uniform(-spread, spread), -1.0, 1.0);

@@ -28,6 +28,7 @@
 
 namespace bespoke {
 
+class MakeHumanRandom;
 struct MakeHumanBodyOptions;
 struct MakeHumanParameters;
 
@@ -54,6 +55,12 @@ void CheckMakeHumanShape(const std::map<std::string, double>& shape);
 // weight), added to `weights`.
 void AddMakeHumanShapeWeights(const std::map<std::string, double>& shape,
                               std::map<std::string, double>* weights);
+
+// Draws the three ethnic weights (three uniform draws, always made), takes
+// the options' overrides and normalizes them to sum 1; InputError when they
+// are all 0. Shared by both populations' draws.
+void DrawMakeHumanEthnicWeights(const MakeHumanBodyOptions& options, MakeHumanRandom* random,
+                                MakeHumanParameters* parameters);
 
 // The "full" population's draw for options.seed, then the options'
 // overrides (as MakeHumanDraw). Sets parameters.hard_case.
