@@ -8,6 +8,7 @@
 #include <string>
 
 #include "measure/cloud_geodesic/cell_sheets.h"
+#include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
@@ -26,12 +27,6 @@ void CloudGridOptions::Check() const {
   if (!(max_link_angle_deg > 0 && max_link_angle_deg <= 90))
     bad("max_link_angle_deg must be in (0, 90]");
 }
-
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
 
 CloudGrid::CloudGrid(const CloudGridOptions& options, const Eigen::MatrixX3d& points,
                      Progress* progress)

@@ -4,12 +4,12 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
 
+#include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Half of each quadrant's points by arc length, half by curvature (see
 // ArcLengthTable): about halves the polygon's length deficit on the
 // body's superellipses for the same number of points.

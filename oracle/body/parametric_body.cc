@@ -8,13 +8,12 @@
 
 #include "oracle/body/mesh_checks.h"
 #include "oracle/body/parametric_build.h"
+#include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
 namespace parametric {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Torso ring heights: crotch .. armpit by spacing, the armhole band in a
 // fixed number of steps, then up to the dome start by spacing and sideways

@@ -5,12 +5,11 @@
 #include <cmath>
 
 #include "oracle/body/parametric_build.h"
+#include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke::parametric {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 size_t IndexOf(const std::vector<double>& levels, double value) {
   for (size_t i = 0; i < levels.size(); ++i) {

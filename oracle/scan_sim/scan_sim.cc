@@ -6,12 +6,11 @@
 
 #include "oracle/scan_sim/raycaster.h"
 #include "oracle/scan_sim/scene_objects.h"
+#include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 void CheckRange(const char* name, double value, double lo, double hi) {
   if (!std::isfinite(value) || value < lo || value > hi) {

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scanners/core/constants.h"
+
 namespace bespoke {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A closed prism over a convex polygon `outline` (counter-clockwise from
 // above) from z = 0 to `height`, faces outwards.

@@ -5,10 +5,11 @@
 #include <memory>
 #include <random>
 
+#include "scanners/core/constants.h"
+
 namespace bespoke::testing {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 using Rng = std::mt19937_64;
 
 double Uniform(Rng& rng, double a, double b) {

@@ -5,16 +5,11 @@
 #include <string>
 #include <unordered_map>
 
+#include "scanners/core/cell_key.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
 namespace {
-
-std::uint64_t EdgeKey(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-         static_cast<std::uint32_t>(b);
-}
 
 // The sub-mesh of `faces` (vertices renumbered, face order kept) and the map
 // from mesh faces to crop faces (-1 where dropped).

@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "measure/tape/convex_hull_2d.h"
+#include "scanners/core/cell_key.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
@@ -16,11 +17,6 @@ Eigen::Vector3d UnitNormal(const Eigen::Vector3d& normal) {
   if (!(length > 0) || !std::isfinite(length))
     throw InputError("mesh section: the plane normal is zero or not finite");
   return normal / length;
-}
-
-std::uint64_t EdgeKey(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
 }
 
 // The section as a graph: crossing points (one per crossed mesh edge) and,

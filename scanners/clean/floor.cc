@@ -16,12 +16,11 @@
 #include <string>
 
 #include "scanners/clean/euclidean_clusters.h"
+#include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 struct Candidate {
   FloorPlane plane;                 // up not yet oriented
