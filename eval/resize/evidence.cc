@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <Eigen/Core>
 
 #include "resize/designs/designs.h"
 #include "resize/ga/grading.h"
@@ -23,6 +25,80 @@ PatternDistance ComparePatterns(const Pattern& a, const Pattern& b) {
     d.max_mm = std::max(d.max_mm, s.max_mm);
   }
   d.mean_mm = sum / static_cast<double>(std::max<Eigen::Index>(count, 1));
+  return d;
+}
+
+namespace {
+
+std::vector<Eigen::Vector2d> Sample(const Outline& o, double step) {
+  std::vector<Eigen::Vector2d> points;
+  const Eigen::Index n = o.rows();
+  for (Eigen::Index v = 0; v < n; ++v) {
+    const Eigen::Vector2d a = o.row(v), b = o.row((v + 1) % n);
+    const int k = std::max(1, static_cast<int>(std::ceil((b - a).norm() / step)));
+    for (int i = 0; i < k; ++i) points.push_back(a + (b - a) * (static_cast<double>(i) / k));
+  }
+  return points;
+}
+
+double ToOutline(const Eigen::Vector2d& p, const Outline& o) {
+  double best = std::numeric_limits<double>::infinity();
+  const Eigen::Index n = o.rows();
+  for (Eigen::Index v = 0; v < n; ++v) {
+    const Eigen::Vector2d a = o.row(v), d = Eigen::Vector2d(o.row((v + 1) % n)) - a;
+    const double t = std::clamp((p - a).dot(d) / std::max(d.squaredNorm(), 1e-12), 0.0, 1.0);
+    best = std::min(best, (a + t * d - p).norm());
+  }
+  return best;
+}
+
+}  // namespace
+
+PatternDistance CompareOutlineShapes(const Outline& a, const Outline& b_in, double step_mm) {
+  const std::vector<Eigen::Vector2d> sa = Sample(a, 4 * step_mm);
+  Outline b = b_in;
+  Eigen::Vector2d ca = Eigen::Vector2d::Zero(), cb = Eigen::Vector2d::Zero();
+  for (const auto& p : sa) ca += p;
+  ca /= static_cast<double>(sa.size());
+  std::vector<Eigen::Vector2d> sb = Sample(b, 4 * step_mm);
+  for (const auto& p : sb) cb += p;
+  cb /= static_cast<double>(sb.size());
+  b.rowwise() += (ca - cb).transpose();
+  for (int it = 0; it < 40; ++it) {
+    sb = Sample(b, 4 * step_mm);
+    // Pairs: every sample of b with its nearest sample of a.
+    Eigen::Vector2d mb = Eigen::Vector2d::Zero(), ma = Eigen::Vector2d::Zero();
+    std::vector<Eigen::Vector2d> pa(sb.size());
+    for (size_t i = 0; i < sb.size(); ++i) {
+      double best = std::numeric_limits<double>::infinity();
+      for (const auto& q : sa)
+        if ((q - sb[i]).squaredNorm() < best) best = (q - sb[i]).squaredNorm(), pa[i] = q;
+      mb += sb[i];
+      ma += pa[i];
+    }
+    mb /= static_cast<double>(sb.size());
+    ma /= static_cast<double>(sb.size());
+    Eigen::Matrix2d h = Eigen::Matrix2d::Zero();
+    for (size_t i = 0; i < sb.size(); ++i) h += (sb[i] - mb) * (pa[i] - ma).transpose();
+    const double angle = std::atan2(h(0, 1) - h(1, 0), h(0, 0) + h(1, 1));
+    Eigen::Matrix2d r;
+    r << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+    for (Eigen::Index v = 0; v < b.rows(); ++v)
+      b.row(v) = (r * (Eigen::Vector2d(b.row(v)) - mb) + ma).transpose();
+    if (std::abs(angle) < 1e-7 && (ma - mb).norm() < 1e-6) break;
+  }
+  PatternDistance d;
+  double sum = 0;
+  size_t count = 0;
+  const Outline& bb = b;
+  for (const auto& [from, to] : {std::pair{&a, &bb}, std::pair{&bb, &a}})
+    for (const Eigen::Vector2d& p : Sample(*from, step_mm)) {
+      const double e = ToOutline(p, *to);
+      sum += e;
+      d.max_mm = std::max(d.max_mm, e);
+      ++count;
+    }
+  d.mean_mm = sum / static_cast<double>(std::max<size_t>(count, 1));
   return d;
 }
 
@@ -57,7 +133,7 @@ FitEvidence EvaluateFit(const ResizeOptions& options, const std::string& design,
   for (const MeasurementBinding& b : base.bindings)
     e.grading_max_binding_error_mm =
         std::max(e.grading_max_binding_error_mm,
-                 std::abs(BindingValue(r.seed, b) - body.at(b.measurement) - b.ease_mm));
+                 std::abs(BindingValue(r.seed, b) - BindingTarget(b, body)));
   e.time_s = r.ga_time_s + r.polish_time_s;
   e.polish_start = r.polish_start;
   if (patterns) *patterns = FitPatterns{r.fitted, direct, r.seed};

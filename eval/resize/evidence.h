@@ -23,6 +23,14 @@ struct PatternDistance {
 // Throws InputError when the patterns' pieces or vertex counts differ.
 PatternDistance ComparePatterns(const Pattern& a, const Pattern& b);
 
+// Distance between two outlines that need not correspond vertex by vertex
+// (two drafts of a piece by another system, with their own sampling): `b` is
+// rigidly aligned onto `a` (rotation + translation, iterative closest points
+// from the centroids), then the mean and max over both outlines, sampled
+// every `step_mm` of arc length, of each sample's distance to the other
+// outline (mm).
+PatternDistance CompareOutlineShapes(const Outline& a, const Outline& b, double step_mm = 2);
+
 struct FitEvidence {
   double max_binding_error_mm = 0;   // largest |achieved - target|
   double max_seam_mismatch_mm = 0;   // largest |length(a) - length(b) - ease|

@@ -10,6 +10,8 @@
 // file (the last two need --sidecar for landmarks, seams and bindings).
 // Bad input (unknown or missing measurement names, missing bindings, seams of
 // different point counts, self-intersecting outlines) is an InputError (exit 1).
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
@@ -20,6 +22,7 @@
 #include "resize/designs/designs.h"
 #include "resize/ga/report.h"
 #include "resize/ga/resize.h"
+#include "resize/io/measurements_io.h"
 #include "resize/io/pattern_dxf.h"
 #include "resize/io/pattern_io.h"
 #include "resize/io/pattern_json.h"
@@ -36,7 +39,8 @@ struct ResizeCommandOptions {
   std::filesystem::path pattern;       // base pattern file, or
   std::string design;                  // a built-in design
   std::filesystem::path sidecar;       // optional landmarks/seams/bindings
-  std::filesystem::path measurements;  // MEAS.json / TRUTH.json
+  std::filesystem::path measurements;  // MEAS.json / TRUTH.json / a Valentina .vit
+  std::filesystem::path base_measurements;  // the body the base pattern was drafted for
   std::filesystem::path out_dir;
   ResizeOptions resize;
   double seam_allowance_mm = 10;  // SVG/DXF cut lines
@@ -79,9 +83,19 @@ void WriteConvergence(const ResizeResult& r, const std::filesystem::path& file) 
 
 int RunResize(const ResizeCommandOptions& o, const GlobalOptions& global) {
   o.Check();
-  const MeasurementSet body = ReadMeasurements(o.measurements);
-  const Pattern base = o.design.empty() ? LoadPattern(o.pattern, o.sidecar)
-                                        : DraftDesign(o.design, BaseMeasurements(o.design));
+  std::vector<std::string> skipped;
+  const MeasurementSet body = LoadMeasurements(o.measurements, &skipped);
+  if (!skipped.empty())
+    spdlog::info("{}: left out {} measurement(s) the catalogue does not know: {}",
+                 o.measurements.string(), skipped.size(), fmt::join(skipped, ", "));
+  Pattern base = o.design.empty() ? LoadPattern(o.pattern, o.sidecar)
+                                  : DraftDesign(o.design, BaseMeasurements(o.design));
+  if (!o.base_measurements.empty()) {
+    const MeasurementSet base_body = LoadMeasurements(o.base_measurements);
+    for (const auto& [name, value] : base_body) base.base_body[name] = value;
+    ResolveKeptEase(o.base_measurements.string(), &base);
+  }
+  for (const std::string& note : base.notes) spdlog::info("import: {}", note);
   CheckBindingsAgainst(base, body, o.design.empty() ? o.pattern.string() : "design " + o.design,
                        o.measurements.string());
   CreateDirectories(o.out_dir);
@@ -94,6 +108,7 @@ int RunResize(const ResizeCommandOptions& o, const GlobalOptions& global) {
                                    {"design", o.design},
                                    {"sidecar", o.sidecar.string()},
                                    {"measurements", o.measurements.string()},
+                                   {"base_measurements", o.base_measurements.string()},
                                    {"seed", options.seed},
                                    {"population", options.population},
                                    {"generations", options.generations},
@@ -136,7 +151,12 @@ CommandRunner SetupResizeCommand(CLI::App& app) {
   app.add_option("--design", o->design, "A built-in design instead: shirt or trousers");
   app.add_option("--sidecar", o->sidecar,
                  "JSON adding landmarks, seams and bindings to a DXF/GarmentCode pattern");
-  app.add_option("--measurements", o->measurements, "MEAS.json or TRUTH.json (mm)")->required();
+  app.add_option("--measurements", o->measurements,
+                 "MEAS.json or TRUTH.json (mm), or a Valentina .vit file")
+      ->required();
+  app.add_option("--base-measurements", o->base_measurements,
+                 "The body the base pattern was drafted for (.json or .vit): bindings without "
+                 "an ease of their own keep the base's ease at that body");
   app.add_option("-o,--out", o->out_dir, "Output folder")->required();
   app.add_option("--seed", o->resize.seed, "Random seed (same seed, same result)");
   app.add_option("--population", o->resize.population, "Individuals (thesis: 400)");

@@ -63,6 +63,15 @@ BlockSet BuildBlocks(const BlockOptions& options, const Pattern& pattern) {
         params.push_back(Param(xs, ys, line.row(r).transpose()));
       block.internal_lines.push_back(params);
     }
+    for (const StraightRun& r : piece.straight) {
+      BlockRun run{r.from, r.to, {}, {}};
+      const Eigen::Vector2d a = piece.outline.row(r.from), d = Eigen::Vector2d(piece.outline.row(r.to)) - a;
+      for (int v = (r.from + 1) % piece.num_vertices(); v != r.to; v = (v + 1) % piece.num_vertices()) {
+        run.inner.push_back(v);
+        run.t.push_back((Eigen::Vector2d(piece.outline.row(v)) - a).dot(d) / std::max(d.squaredNorm(), 1e-12));
+      }
+      if (!run.inner.empty()) block.straight.push_back(std::move(run));
+    }
     set.num_genes += 2 * block.nu * block.nv;
     set.base_genes.conservativeResize(set.num_genes);
     for (int j = 0; j < block.nv; ++j)
@@ -88,6 +97,10 @@ void EvalOutline(const Block& block, const double* genes, Outline* out) {
   const int n = static_cast<int>(block.outline.size());
   out->resize(n, 2);
   for (int v = 0; v < n; ++v) out->row(v) = EvalParam(block, genes, block.outline[v]).transpose();
+  for (const BlockRun& r : block.straight) {
+    const Eigen::RowVector2d a = out->row(r.from), d = out->row(r.to) - a;
+    for (size_t k = 0; k < r.inner.size(); ++k) out->row(r.inner[k]) = a + r.t[k] * d;
+  }
 }
 
 Pattern ApplyGenes(const Pattern& base, const BlockSet& blocks, const Eigen::VectorXd& genes) {

@@ -24,6 +24,15 @@ struct GridParam {
   double s = 0, t = 0;  // bilinear weights along x and y (may leave [0, 1] outside the grid)
 };
 
+// A straight run of the piece (pattern.h StraightRun): its inner vertices are
+// placed on the chord between its end vertices at their base parameters, so
+// the run stays straight whatever the control points do.
+struct BlockRun {
+  int from = 0, to = 0;    // outline indices of the ends
+  std::vector<int> inner;  // outline indices of the inner vertices
+  std::vector<double> t;   // their parameters along the chord (0 = from, 1 = to)
+};
+
 struct Block {
   int nu = 0, nv = 0;              // control points along x (columns) and y (rows)
   int offset = 0;                  // index of this block's first gene
@@ -32,6 +41,7 @@ struct Block {
   std::vector<GridParam> grain;    // 0 or 2 (start, end)
   std::vector<std::vector<GridParam>> internal_lines;
   double extent_x = 0, extent_y = 0;  // bounding box size of the base piece (mm)
+  std::vector<BlockRun> straight;     // straight runs kept straight by EvalOutline
 };
 
 struct BlockSet {
@@ -51,7 +61,8 @@ BlockSet BuildBlocks(const BlockOptions& options, const Pattern& pattern);
 // Bilinear evaluation of `p` on the control grid of `block` in `genes`.
 Eigen::Vector2d EvalParam(const Block& block, const double* genes, const GridParam& p);
 
-// Writes the outline of `block` for `genes` into `out` (#V x 2, resized).
+// Writes the outline of `block` for `genes` into `out` (#V x 2, resized);
+// inner vertices of straight runs are put back on their chords.
 void EvalOutline(const Block& block, const double* genes, Outline* out);
 
 // The pattern with every piece reshaped by `genes` (outlines, inside

@@ -12,7 +12,7 @@ std::vector<double> ProportionalScales(const Pattern& pattern, const Measurement
     const double current = BindingValue(pattern, b);
     if (current <= 0) continue;
     // Sr = m_i / d (Algorithm 6 line 6), with the ease kept: target / current.
-    const double ratio = (body.at(b.measurement) + b.ease_mm) / current;
+    const double ratio = BindingTarget(b, body) / current;
     for (const BindingTerm& t : b.terms) {
       const int p = pattern.FindPiece(t.piece);
       scale[p] = known[p] ? std::max(scale[p], ratio) : ratio;  // largest Sr (line 8)

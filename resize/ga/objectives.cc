@@ -30,10 +30,35 @@ void SeamEdges(const Outline& o, const std::vector<int>& idx, std::vector<double
 
 }  // namespace
 
-FitnessModel::FitnessModel(const Pattern& base, const BlockSet& blocks, const MeasurementSet& body)
+FitnessModel::FitnessModel(const Pattern& base, const BlockSet& blocks, const MeasurementSet& body,
+                           const Pattern* structure)
     : base_(base), blocks_(blocks) {
+  const Pattern& ref = structure ? *structure : base;
+  for (size_t p = 0; p < ref.pieces.size(); ++p) {
+    const Piece& piece = ref.pieces[p];
+    const int k = static_cast<int>(p);
+    for (const StraightRun& r : piece.straight)
+      if (r.fold) {
+        const Eigen::Vector2d d = piece.outline.row(r.to) - piece.outline.row(r.from);
+        directions_.push_back({k, 0, r.from, r.to, d.normalized()});
+      }
+    for (const LevelLine& l : piece.level_lines) {
+      const int a = piece.FindLandmark(l.from), b = piece.FindLandmark(l.to);
+      const Eigen::Vector2d d = piece.LandmarkPosition(b) - piece.LandmarkPosition(a);
+      directions_.push_back({k, 1, a, b, d.normalized()});
+    }
+    if (piece.has_grain)
+      directions_.push_back({k, 2, 0, 0, (piece.grain_end - piece.grain_start).normalized()});
+    const Eigen::VectorXd turning = TurningAngles(piece.outline);
+    for (int v : piece.right_angles) {
+      corners_.push_back({k, v});
+      corner_turning_.push_back(turning[v]);
+    }
+    for (const Dart& d : piece.darts) darts_.push_back({k, d});
+  }
+  num_structure_ = static_cast<int>(directions_.size() + corners_.size() + darts_.size());
   for (const MeasurementBinding& b : base.bindings)
-    targets_.push_back(body.at(b.measurement) + b.ease_mm);
+    targets_.push_back(BindingTarget(b, body));
   for (const Piece& piece : base.pieces) {
     base_turning_.push_back(TurningAngles(piece.outline));
     const Eigen::Index n = piece.outline.rows();
@@ -120,6 +145,70 @@ std::vector<double> FitnessModel::SeamMismatch(const Eigen::VectorXd& genes) con
   return values;
 }
 
+void FitnessModel::Structure(const Eigen::VectorXd& genes, const std::vector<Outline>& outlines,
+                             std::vector<double>* out) const {
+  for (const Direction& d : directions_) {
+    const Block& block = blocks_.blocks[d.piece];
+    const Piece& piece = base_.pieces[d.piece];
+    Eigen::Vector2d a, b;
+    if (d.kind == 0) {
+      a = outlines[d.piece].row(d.a);
+      b = outlines[d.piece].row(d.b);
+    } else if (d.kind == 1) {
+      auto at = [&](int l) -> Eigen::Vector2d {
+        const int v = piece.landmarks[l].vertex;
+        if (v >= 0) return outlines[d.piece].row(v).transpose();
+        return EvalParam(block, genes.data(), block.inside[l]);
+      };
+      a = at(d.a);
+      b = at(d.b);
+    } else {
+      a = EvalParam(block, genes.data(), block.grain[0]);
+      b = EvalParam(block, genes.data(), block.grain[1]);
+    }
+    const Eigen::Vector2d e = b - a;
+    out->push_back(d.unit.x() * e.y() - d.unit.y() * e.x());
+  }
+  constexpr double kAngleScaleMm = 100;
+  for (size_t c = 0; c < corners_.size(); ++c) {
+    const Outline& o = outlines[corners_[c].first];
+    const int n = static_cast<int>(o.rows()), v = corners_[c].second;
+    const Eigen::Vector2d e0 = o.row(v) - o.row((v - 1 + n) % n), e1 = o.row((v + 1) % n) - o.row(v);
+    const double turning = std::atan2(e0.x() * e1.y() - e0.y() * e1.x(), e0.dot(e1));
+    out->push_back(WrapAngle(turning - corner_turning_[c]) * kAngleScaleMm);
+  }
+  for (const auto& [p, d] : darts_) {
+    const Outline& o = outlines[p];
+    out->push_back((o.row(d.leg_a) - o.row(d.apex)).norm() - (o.row(d.leg_b) - o.row(d.apex)).norm());
+  }
+}
+
+void FitnessModel::StructureResiduals(const Eigen::VectorXd& genes,
+                                      Eigen::VectorXd* residuals) const {
+  std::vector<Outline> outlines;
+  Outlines(genes, &outlines);
+  std::vector<double> r;
+  Structure(genes, outlines, &r);
+  *residuals = Eigen::Map<Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size()));
+}
+
+void FitnessModel::Constraints(const Eigen::VectorXd& genes, Eigen::VectorXd* constraints) const {
+  thread_local std::vector<Outline> outlines;
+  Outlines(genes, &outlines);
+  std::vector<double> c;
+  for (size_t b = 0; b < targets_.size(); ++b)
+    c.push_back(BindingAchieved(b, genes, outlines) - targets_[b]);
+  std::vector<double> la, lb;
+  for (const SeamData& d : seams_) {
+    SeamEdges(outlines[d.piece_a], d.a, &la);
+    SeamEdges(outlines[d.piece_b], d.b, &lb);
+    double total = -d.ease;
+    for (size_t k = 0; k < la.size(); ++k) total += la[k] - lb[k];
+    c.push_back(total);
+  }
+  *constraints = Eigen::Map<Eigen::VectorXd>(c.data(), static_cast<Eigen::Index>(c.size()));
+}
+
 Objectives FitnessModel::Evaluate(const Eigen::VectorXd& genes, bool check_simple) const {
   thread_local std::vector<Outline> outlines;
   thread_local std::vector<double> la, lb;
@@ -161,6 +250,12 @@ Objectives FitnessModel::Evaluate(const Eigen::VectorXd& genes, bool check_simpl
     if (check_simple && FindSelfIntersection(outlines[p]).first >= 0) o.simple = false;
   }
   o.shape_deg /= std::max(vertices, 1);
+  if (num_structure_ > 0) {
+    thread_local std::vector<double> rules;
+    rules.clear();
+    Structure(genes, outlines, &rules);
+    for (double r : rules) o.max_structure_mm = std::max(o.max_structure_mm, std::abs(r));
+  }
   o.critical_shape_deg /= std::max(critical, 1);
   return o;
 }
@@ -220,6 +315,7 @@ void FitnessModel::Residuals(const Eigen::VectorXd& genes, double angle_scale_mm
         s.push_back(length_scale_mm * (l / base_length_[p][v] - 1.0));
       }
   }
+  Structure(genes, outlines, &c);
   *constraints = Eigen::Map<Eigen::VectorXd>(c.data(), static_cast<Eigen::Index>(c.size()));
   *soft = Eigen::Map<Eigen::VectorXd>(s.data(), static_cast<Eigen::Index>(s.size()));
 }

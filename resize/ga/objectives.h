@@ -33,6 +33,7 @@ struct Objectives {
   double max_measurement_mm = 0;  // largest |binding error|
   double critical_shape_deg = 0;  // mean |turning-angle change| at critical points
   double max_seam_length_mm = 0;  // largest |length(a) - length(b) - ease| over seams
+  double max_structure_mm = 0;    // largest structure-rule violation (StructureResiduals, mm)
   bool simple = true;             // every outline free of self-intersections (final checks only)
 };
 
@@ -40,7 +41,11 @@ struct Objectives {
 // base angles. Evaluate() is thread-safe (it uses no shared mutable state).
 class FitnessModel {
  public:
-  FitnessModel(const Pattern& base, const BlockSet& blocks, const MeasurementSet& body);
+  // `structure` (same pieces and vertex counts as `base`; defaults to `base`)
+  // gives the directions of folds, level lines and grain lines, the square
+  // corners' angles and the darts that the structure rules keep.
+  FitnessModel(const Pattern& base, const BlockSet& blocks, const MeasurementSet& body,
+               const Pattern* structure = nullptr);
 
   Objectives Evaluate(const Eigen::VectorXd& genes, bool check_simple = false) const;
 
@@ -50,8 +55,19 @@ class FitnessModel {
   // Per seam: length(a) - length(b) - ease (mm).
   std::vector<double> SeamMismatch(const Eigen::VectorXd& genes) const;
 
+  // Binding errors then seam length mismatches (mm), for `genes`.
+  void Constraints(const Eigen::VectorXd& genes, Eigen::VectorXd* constraints) const;
+
+  // The structure rules, one residual each (mm), 0 when kept: a fold's,
+  // level line's or grain line's far end off its reference direction
+  // (the sideways offset), a square corner's angle change x 100 mm/rad, a
+  // dart's leg-length difference. Straight runs need none (EvalOutline
+  // keeps them straight).
+  void StructureResiduals(const Eigen::VectorXd& genes, Eigen::VectorXd* residuals) const;
+  int num_structure() const { return num_structure_; }
+
   // For the polish: hard constraints (binding errors, seam length
-  // mismatches; mm) and soft residuals (turning-angle changes at every outline
+  // mismatches, then the structure rules; mm) and soft residuals (turning-angle changes at every outline
   // edge's direction change scaled by `angle_scale_mm` per radian (keeps
   // inner angles and the piece's orientation to the grain), paired-edge
   // differences in mm, paired seam-angle differences scaled likewise).
@@ -81,8 +97,22 @@ class FitnessModel {
   double BindingAchieved(size_t b, const Eigen::VectorXd& genes,
                          const std::vector<Outline>& outlines) const;
 
+  struct Direction {  // a fold, level line or grain line kept at its reference direction
+    int piece;
+    int kind;  // 0 outline vertices a-b, 1 landmarks a-b, 2 grain line
+    int a, b;
+    Eigen::Vector2d unit;
+  };
+  void Structure(const Eigen::VectorXd& genes, const std::vector<Outline>& outlines,
+                 std::vector<double>* out) const;
+
   Pattern base_;
   BlockSet blocks_;
+  std::vector<Direction> directions_;
+  std::vector<std::pair<int, int>> corners_;  // piece, vertex
+  std::vector<double> corner_turning_;        // reference turning (rad)
+  std::vector<std::pair<int, Dart>> darts_;
+  int num_structure_ = 0;
   std::vector<double> targets_;
   std::vector<SeamData> seams_;
   std::vector<Eigen::VectorXd> base_turning_;    // per piece, radians

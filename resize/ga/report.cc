@@ -48,6 +48,77 @@ std::vector<PieceShapeChange> ShapeChanges(const Pattern& base, const Pattern& f
   return changes;
 }
 
+namespace {
+
+double DirectionDeg(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return std::abs(Wrap(std::atan2(b.y(), b.x()) - std::atan2(a.y(), a.x()))) * 180 / M_PI;
+}
+
+// Sign changes of the turning angle along runs of vertices that turn by more
+// than `min_rad` (vertices on straight runs and sharp corners excluded).
+int Inflections(const Eigen::VectorXd& turning, const std::vector<bool>& skip) {
+  int count = 0, last = 0;
+  constexpr double kMinRad = 1e-3, kCornerRad = 0.35;
+  for (Eigen::Index v = 0; v < turning.size(); ++v) {
+    if (skip[v] || std::abs(turning[v]) > kCornerRad) {
+      last = 0;
+      continue;
+    }
+    if (std::abs(turning[v]) < kMinRad) continue;
+    const int sign = turning[v] > 0 ? 1 : -1;
+    if (last != 0 && sign != last) ++count;
+    last = sign;
+  }
+  return count;
+}
+
+}  // namespace
+
+std::vector<StructureFigures> StructureChanges(const Pattern& base, const Pattern& fitted) {
+  std::vector<StructureFigures> all;
+  for (size_t p = 0; p < base.pieces.size(); ++p) {
+    const Piece &a = base.pieces[p], &b = fitted.pieces[p];
+    const int n = a.num_vertices();
+    StructureFigures f;
+    f.piece = a.name;
+    std::vector<bool> on_run(n, false);
+    for (const StraightRun& r : a.straight) {
+      const Eigen::Vector2d p0 = b.outline.row(r.from), d = Eigen::Vector2d(b.outline.row(r.to)) - p0;
+      for (int v = r.from; v != r.to; v = (v + 1) % n) {
+        on_run[v] = true;
+        const Eigen::Vector2d q = Eigen::Vector2d(b.outline.row(v)) - p0;
+        f.max_kink_mm =
+            std::max(f.max_kink_mm, std::abs(d.x() * q.y() - d.y() * q.x()) / std::max(d.norm(), 1e-9));
+      }
+      on_run[r.to] = true;
+      if (r.fold)
+        f.max_fold_tilt_deg = std::max(
+            f.max_fold_tilt_deg,
+            DirectionDeg(Eigen::Vector2d(a.outline.row(r.to) - a.outline.row(r.from)), d));
+    }
+    for (const LevelLine& l : a.level_lines) {
+      const int i = a.FindLandmark(l.from), j = a.FindLandmark(l.to);
+      f.max_level_tilt_deg = std::max(
+          f.max_level_tilt_deg, DirectionDeg(a.LandmarkPosition(j) - a.LandmarkPosition(i),
+                                             b.LandmarkPosition(j) - b.LandmarkPosition(i)));
+    }
+    if (a.has_grain)
+      f.max_grain_tilt_deg =
+          DirectionDeg(a.grain_end - a.grain_start, b.grain_end - b.grain_start);
+    const Eigen::VectorXd ta = TurningAngles(a.outline), tb = TurningAngles(b.outline);
+    for (int v : a.right_angles)
+      f.max_corner_change_deg =
+          std::max(f.max_corner_change_deg, std::abs(Wrap(tb[v] - ta[v])) * 180 / M_PI);
+    for (const Dart& d : a.darts)
+      f.max_dart_mismatch_mm =
+          std::max(f.max_dart_mismatch_mm, std::abs((b.outline.row(d.leg_a) - b.outline.row(d.apex)).norm() -
+                                                    (b.outline.row(d.leg_b) - b.outline.row(d.apex)).norm()));
+    f.new_inflections = std::max(0, Inflections(tb, on_run) - Inflections(ta, on_run));
+    all.push_back(f);
+  }
+  return all;
+}
+
 json ObjectivesJson(const Objectives& o) {
   return {{"measurement_mm", o.measurement_mm},
           {"seam", o.seam},
@@ -63,10 +134,12 @@ json ResizeReportJson(const Pattern& base, const MeasurementSet& body, const Res
   json measurements = json::array();
   for (size_t b = 0; b < base.bindings.size(); ++b) {
     const MeasurementBinding& binding = base.bindings[b];
+    const double body_mm = binding.fixed ? 0.0 : body.at(binding.measurement);
     measurements.push_back({{"binding", binding.id},
-                            {"measurement", binding.measurement},
-                            {"body_mm", body.at(binding.measurement)},
-                            {"ease_mm", binding.ease_mm},
+                            {"measurement", binding.fixed ? "(fixed)" : binding.measurement},
+                            {"body_mm", body_mm},
+                            {"ease_mm", r.targets_mm[b] - body_mm},
+                            {"ease_percent", binding.ease_percent},
                             {"target_mm", r.targets_mm[b]},
                             {"achieved_mm", r.achieved_mm[b]},
                             {"error_mm", r.achieved_mm[b] - r.targets_mm[b]},

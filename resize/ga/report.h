@@ -23,6 +23,24 @@ struct PieceShapeChange {
 };
 std::vector<PieceShapeChange> ShapeChanges(const Pattern& base, const Pattern& fitted);
 
+// How well a piece's structure survived (fitted against base, same vertex
+// counts), for a tailor's check: the largest kink on a straight run (an inner
+// vertex's distance from its run's chord, mm), the largest tilt of a level
+// line, fold or grain line (deg), the largest change of a square corner's
+// angle (deg), the largest dart leg-length difference (mm), and the number of
+// new inflections on curved parts of the outline.
+struct StructureFigures {
+  std::string piece;
+  double max_kink_mm = 0;
+  double max_level_tilt_deg = 0;
+  double max_fold_tilt_deg = 0;
+  double max_grain_tilt_deg = 0;
+  double max_corner_change_deg = 0;
+  double max_dart_mismatch_mm = 0;
+  int new_inflections = 0;
+};
+std::vector<StructureFigures> StructureChanges(const Pattern& base, const Pattern& fitted);
+
 nlohmann::json ObjectivesJson(const Objectives& o);
 
 // The full report. `settings` is stored as given (the options used).

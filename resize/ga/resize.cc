@@ -7,6 +7,7 @@
 #include <limits>
 #include <pagmo/utils/multi_objective.hpp>
 
+#include "resize/ga/grader.h"
 #include "resize/ga/grading.h"
 #include "resize/ga/operators.h"
 #include "resize/pattern/geometry.h"
@@ -155,25 +156,40 @@ void ResizeOptions::Check() const {
       !(tolerance_mm > 0) || !(min_gap_mm > 0))
     throw InputError("resize options out of range");
   polish_options.Check();
+  grader_options.Check();
 }
 
-ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& base,
+ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& given_base,
                            const MeasurementSet& given, Progress* progress) {
   options.Check();
   MeasurementSet body = given;
   AddDerivedMeasurements(&body, "the measurements");
+  Pattern base = given_base;
   ValidatePattern(base, "pattern '" + base.name + "'");
+  ResolveKeptEase("pattern '" + base.name + "'", &base);
   if (base.bindings.empty())
     throw InputError("pattern '" + base.name + "' has no measurement bindings to fit");
   CheckBindingsAgainst(base, body, "pattern '" + base.name + "'", "the measurements");
   const auto start = std::chrono::steady_clock::now();
-  const BlockSet blocks = BuildBlocks(options.block_options, base);
-  const FitnessModel model(base, blocks, body);
   ResizeResult result;
+  const BlockSet base_blocks = BuildBlocks(options.block_options, base);
+  const FitnessModel base_model(base, base_blocks, body);
   const std::vector<double> scales = ProportionalScales(base, body);
   result.seed = ScalePieces(base, scales);
-  const Eigen::VectorXd seed = SeedGenes(base, blocks, scales);
-  result.seed_objectives = model.Evaluate(seed, true);
+  result.seed_objectives = base_model.Evaluate(SeedGenes(base, base_blocks, scales), true);
+  if (options.graded_start) {
+    const GradeResult graded = Grade(options.grader_options, base_model);
+    result.graded = ApplyGenes(base, base_blocks, graded.genes);
+    result.graded_constraint_mm = graded.max_constraint_mm;
+  } else {
+    result.graded = result.seed;
+    result.graded_constraint_mm = result.seed_objectives.max_measurement_mm;
+  }
+  // The GA and the polish work on the graded pattern's own control grids.
+  const Pattern& graded = result.graded;
+  const BlockSet blocks = BuildBlocks(options.block_options, graded);
+  const FitnessModel model(graded, blocks, body, &base);
+  const Eigen::VectorXd seed = blocks.base_genes;
 
   Rng rng(options.seed);
   const size_t n = static_cast<size_t>(options.population);
@@ -242,21 +258,18 @@ ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& base,
   const auto ga_end = std::chrono::steady_clock::now();
   result.ga_time_s = std::chrono::duration<double>(ga_end - start).count();
   if (options.polish) {
-    // Deviation: the polish also starts from the proportional seed and from
-    // the base pattern itself; of the results that meet the constraints the
-    // one with the least polish objective (PolishReport::soft_after: shape,
-    // paired seams, relative edge lengths) is kept, else the least violation
-    // (result.polish_start says which start won).
+    // Deviation: the polish also starts from the graded pattern itself; of
+    // the results that meet the constraints the one with the least polish
+    // objective (PolishReport::soft_after: shape, paired seams, relative edge
+    // lengths) is kept, else the least violation (result.polish_start says
+    // which start won).
     struct Start {
       const char* name;
       Eigen::VectorXd genes;
       PolishReport report;
       Objectives objectives;
     };
-    std::vector<Start> starts = {
-        {"ga", genes, {}, {}},
-        {"seed", seed, {}, {}},
-        {"base", SeedGenes(base, blocks, std::vector<double>(base.pieces.size(), 1.0)), {}, {}}};
+    std::vector<Start> starts = {{"ga", genes, {}, {}}, {"graded", seed, {}, {}}};
     for (Start& s : starts) {
       s.report = Polish(options.polish_options, model, &s.genes);
       s.objectives = model.Evaluate(s.genes, true);
@@ -277,7 +290,7 @@ ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& base,
   result.polish_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - ga_end).count();
   result.objectives = model.Evaluate(genes, true);
-  result.fitted = ApplyGenes(base, blocks, genes);
+  result.fitted = ApplyGenes(graded, blocks, genes);
   result.targets_mm = model.Targets();
   result.achieved_mm = model.Achieved(genes);
   result.seam_mismatch_mm = model.SeamMismatch(genes);

@@ -4,12 +4,17 @@
 //
 // Input: a base pattern (validated, with bindings) and the body's
 // measurements (mm, core names; every bound measurement must be present after
-// the derived ones are added, AddDerivedMeasurements). The polish starts from
-// the GA's pick, the proportional seed and the base pattern and keeps the
-// result with the least polish objective (polish_start says which).
+// the derived ones are added, AddDerivedMeasurements; bindings that keep the
+// base's ease need Pattern::base_body). The polish starts from the GA's pick
+// and from the graded start and keeps the result with the least polish
+// objective (polish_start says which).
+// The GA starts from the graded pattern (grader.h) and its shape objectives,
+// like the polish's soft terms, measure change from that graded shape; the
+// polish keeps the design's structure rules (FitnessModel::StructureResiduals,
+// relative to the base) as hard constraints beside the bindings and seams.
 // Output: the fitted pattern, its objective values before and after the
-// polish, the final Pareto front, per-generation statistics, and the
-// proportional-grading seed for comparison.
+// polish, the final Pareto front, per-generation statistics, the graded
+// start, and the proportional-grading seed for comparison.
 //
 // Deterministic for a given seed (variation runs on one generator; only the
 // pure fitness evaluation runs in parallel, with TBB). Errors: InputError for
@@ -22,6 +27,7 @@
 #include <vector>
 
 #include "resize/ga/block.h"
+#include "resize/ga/grader.h"
 #include "resize/ga/objectives.h"
 #include "resize/ga/polish.h"
 #include "resize/pattern/measurements.h"
@@ -45,6 +51,11 @@ struct ResizeOptions {
   double tolerance_mm = 1;             // measurement tolerance of the final pick. Default 1 mm.
   double min_gap_mm = 0.1;             // grid ordering gap. Default 0.1 mm.
   bool polish = true;                  // run the constrained polish. Default on.
+  // Start the GA from the graded pattern (grader.h) and keep its shape; off:
+  // from the proportional seed (Algorithm 6), keeping the base's shape.
+  // Default on.
+  bool graded_start = true;
+  GraderOptions grader_options;
   PolishOptions polish_options;
   BlockOptions block_options;
   void Check() const;  // InputError naming the bad option
@@ -63,11 +74,13 @@ struct ResizeResult {
   Objectives ga_objectives;  // the GA's pick, before the polish
   Objectives objectives;     // the final answer
   PolishReport polish;
-  std::string polish_start = "none";  // which start the kept polish came from: "ga", "seed", "base"
+  std::string polish_start = "none";  // which start the kept polish came from: "ga" or "graded"
   std::vector<Objectives> front;      // final first front
   std::vector<GenerationStats> history;
   Pattern seed;  // proportional scaling (Algorithm 6)
   Objectives seed_objectives;
+  Pattern graded;                   // the graded start (grader.h), or the seed when off
+  double graded_constraint_mm = 0;  // largest binding / seam error the grader left (mm)
   std::vector<double> targets_mm, achieved_mm;  // per binding
   std::vector<double> seam_mismatch_mm;         // per seam: length(a) - length(b) - ease
   double ga_time_s = 0, polish_time_s = 0;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "resize/io/pattern_dxf.h"
+#include "resize/pattern/edit.h"
 #include "resize/pattern/geometry.h"
 #include "scanners/core/errors.h"
 
@@ -163,7 +164,6 @@ Piece BuildPiece(const RawBlock& block, const Insert& insert, double unit,
   std::vector<Eigen::Vector2d> pts;
   for (const Eigen::Vector2d& p : sew->points) pts.push_back(place(p));
   piece.outline = Clean(pts);
-  if (SignedArea(piece.outline) < 0) piece.outline = piece.outline.colwise().reverse().eval();
   std::set<int> notches;
   bool named = false;
   for (const Entity& e : block.entities) {
@@ -248,6 +248,7 @@ Pattern PatternFromDxf(const std::string& text, const std::string& what) {
     pattern.pieces.push_back(std::move(piece));
   }
   if (pattern.pieces.empty()) throw InputError(what + ": no pattern pieces (BLOCKs) found");
+  MakeCounterClockwise(&pattern);
   ValidatePattern(pattern, what);
   return pattern;
 }

@@ -30,7 +30,13 @@ Pattern LoadPattern(const std::filesystem::path& file, const std::filesystem::pa
                   ? PatternFromGarmentCode(GarmentCodeOptions{}, document, file.string())
                   : PatternFromJson(document, file.string());
   }
-  if (!sidecar.empty()) ApplySidecar(ReadJsonFile(sidecar), sidecar.string(), &pattern);
+  if (!sidecar.empty()) {
+    std::ifstream in(sidecar, std::ios::binary);
+    if (!in) throw InputError(sidecar, "cannot open the sidecar file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    ApplySidecar(ParseJsonWithComments(text.str(), sidecar.string()), sidecar.string(), &pattern);
+  }
   return pattern;
 }
 

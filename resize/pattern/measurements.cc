@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "measure/catalogue/catalogue.h"
 #include "scanners/core/errors.h"
 #include "scanners/core/json_io.h"
 
@@ -27,6 +28,36 @@ bool IsCoreMeasurement(const std::string& name) {
 }
 
 bool IsDerivedMeasurement(const std::string& name) { return name == "body_rise"; }
+
+bool IsBindableMeasurement(const std::string& name) {
+  return IsDerivedMeasurement(name) || IsCoreMeasurement(name) ||
+         Catalogue::Builtin().HasMeasurement(name);
+}
+
+double BindingTarget(const MeasurementBinding& binding, const MeasurementSet& body) {
+  if (binding.fixed) return binding.fixed_mm;
+  return body.at(binding.measurement) * (1 + binding.ease_percent / 100) + binding.ease_mm;
+}
+
+void ResolveKeptEase(const std::string& what, Pattern* pattern) {
+  for (MeasurementBinding& b : pattern->bindings) {
+    if (b.keep_ease.empty() || b.fixed) continue;
+    const auto body = pattern->base_body.find(b.measurement);
+    if (body == pattern->base_body.end())
+      throw InputError(what + ": binding '" + b.id + "' keeps the base pattern's ease, but '" +
+                       b.measurement +
+                       "' is not among the base measurements (sidecar \"base_measurements\")");
+    const double value = BindingValue(*pattern, b);
+    if (b.keep_ease == "percent") {
+      b.ease_percent = 100 * (value / body->second - 1);
+      b.ease_mm = 0;
+    } else {
+      b.ease_mm = value - body->second;
+      b.ease_percent = 0;
+    }
+    b.keep_ease.clear();
+  }
+}
 
 void AddDerivedMeasurements(MeasurementSet* values, const std::string& what) {
   const auto height = values->find("waist_height"), leg = values->find("inside_leg");
@@ -89,9 +120,10 @@ nlohmann::json MeasurementsToJson(const MeasurementSet& values) {
 void CheckBindingsAgainst(const Pattern& pattern, const MeasurementSet& values,
                           const std::string& what, const std::string& where) {
   for (const MeasurementBinding& b : pattern.bindings) {
-    if (!IsCoreMeasurement(b.measurement))
+    if (b.fixed) continue;
+    if (!IsBindableMeasurement(b.measurement))
       throw InputError(what + ": binding '" + b.id + "' uses unknown measurement '" +
-                       b.measurement + "' (bindings use the core names of docs/contracts.md)");
+                       b.measurement + "' (bindings use the catalogue's names, docs/measurements.md)");
     if (!values.count(b.measurement))
       throw InputError(what + ": measurement '" + b.measurement + "' needed by binding '" + b.id +
                        "' is missing from " + where);

@@ -17,10 +17,26 @@ namespace bespoke {
 
 using MeasurementSet = std::map<std::string, double>;  // name -> value (mm)
 
-// The core measurement names of docs/contracts.md (bindings must use these).
-// They include the derived measurements below.
+// The core measurement names of docs/contracts.md. They include the derived
+// measurements below.
 const std::vector<std::string>& CoreMeasurementNames();
 bool IsCoreMeasurement(const std::string& name);
+
+// True for every measurement a binding may use: any measurement of the
+// catalogue (measure/catalogue/catalogue.json) and the derived ones.
+bool IsBindableMeasurement(const std::string& name);
+
+// The target of `binding` for `body` (mm): body x (1 + ease_percent / 100) +
+// ease_mm, or the kept value of a fixed binding. The measurement must be in
+// `body` (CheckBindingsAgainst).
+double BindingTarget(const MeasurementBinding& binding, const MeasurementSet& body);
+
+// Resolves every binding that keeps the base pattern's own ease
+// (MeasurementBinding::keep_ease) from `pattern.base_body`, the measurements
+// the base was drafted for: ease_mm = value - body ("mm"), or ease_percent =
+// 100 (value / body - 1) ("percent"); keep_ease is cleared. InputError
+// naming `what` when a needed measurement is missing from base_body.
+void ResolveKeptEase(const std::string& what, Pattern* pattern);
 
 // Derived measurements: computed from other measurements, so a document need
 // not give them. One so far:
@@ -51,7 +67,7 @@ MeasurementSet MeasurementsFromJson(const nlohmann::json& document, const std::s
 // from the names (…_girth -> girth, …_height/stature -> height, else length).
 nlohmann::json MeasurementsToJson(const MeasurementSet& values);
 
-// Checks every binding of `pattern` against the core names and `values`:
+// Checks every binding of `pattern` against the catalogue and `values`:
 // InputError("<what>: binding 'x' uses unknown measurement 'y'") or
 // ("<what>: measurement 'y' needed by binding 'x' is missing from <where>").
 void CheckBindingsAgainst(const Pattern& pattern, const MeasurementSet& values,

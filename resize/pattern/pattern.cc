@@ -1,5 +1,6 @@
 #include "resize/pattern/pattern.h"
 
+#include <cmath>
 #include <set>
 
 #include "resize/pattern/geometry.h"
@@ -77,10 +78,27 @@ void CheckPiece(const Piece& piece, const std::string& what) {
     if (l.vertex < 0 && !l.position.allFinite())
       throw InputError(where + ": landmark '" + l.name + "' has no valid position");
   }
+  for (const StraightRun& r : piece.straight) {
+    check_index(r.from, "straight run start");
+    check_index(r.to, "straight run end");
+    if (r.from == r.to) throw InputError(where + ": a straight run needs two different ends");
+  }
+  for (int v : piece.right_angles) check_index(v, "right-angle corner");
+  for (const Dart& d : piece.darts) {
+    check_index(d.apex, "dart apex");
+    check_index(d.leg_a, "dart leg");
+    check_index(d.leg_b, "dart leg");
+  }
+  for (const LevelLine& l : piece.level_lines)
+    for (const std::string& end : {l.from, l.to})
+      if (piece.FindLandmark(end) < 0)
+        throw InputError(where + ": level line '" + l.name + "' names unknown landmark '" + end +
+                         "'");
   if (piece.cut_count < 1) throw InputError(where + ": cut count must be at least 1");
 }
 
-void CheckSeam(const Pattern& pattern, const Seam& seam, const std::string& what) {
+void CheckSeam(const Pattern& pattern, const Seam& seam, const std::string& what,
+               bool seam_counts) {
   const std::string where = what + ": seam '" + seam.name + "'";
   size_t counts[2];
   int k = 0;
@@ -93,7 +111,7 @@ void CheckSeam(const Pattern& pattern, const Seam& seam, const std::string& what
                        std::to_string(side->to) + " outside piece '" + side->piece + "'");
     counts[k++] = SeamIndices(*side, n).size();
   }
-  if (counts[0] != counts[1])
+  if (seam_counts && counts[0] != counts[1])
     throw InputError(where + ": sides have different point counts (" + std::to_string(counts[0]) +
                      " on '" + seam.a.piece + "', " + std::to_string(counts[1]) + " on '" +
                      seam.b.piece + "'); stitches pair point i with point i");
@@ -102,7 +120,11 @@ void CheckSeam(const Pattern& pattern, const Seam& seam, const std::string& what
 
 void CheckBinding(const Pattern& pattern, const MeasurementBinding& b, const std::string& what) {
   const std::string where = what + ": binding '" + b.id + "'";
-  if (b.measurement.empty()) throw InputError(where + " has no measurement name");
+  if (b.measurement.empty() && !b.fixed) throw InputError(where + " has no measurement name");
+  if (!b.keep_ease.empty() && b.keep_ease != "mm" && b.keep_ease != "percent")
+    throw InputError(where + ": kept ease is \"mm\" or \"percent\"");
+  if (!std::isfinite(b.ease_mm) || !std::isfinite(b.ease_percent) || b.ease_percent <= -100)
+    throw InputError(where + ": ease must be finite and above -100 %");
   if (b.terms.empty()) throw InputError(where + " has no terms");
   for (const BindingTerm& t : b.terms) {
     const int p = pattern.FindPiece(t.piece);
@@ -121,7 +143,7 @@ void CheckBinding(const Pattern& pattern, const MeasurementBinding& b, const std
 
 }  // namespace
 
-void ValidatePattern(const Pattern& pattern, const std::string& what) {
+void ValidatePattern(const Pattern& pattern, const std::string& what, bool seam_counts) {
   if (pattern.pieces.empty()) throw InputError(what + ": pattern has no pieces");
   std::set<std::string> names;
   for (const Piece& piece : pattern.pieces) {
@@ -130,7 +152,7 @@ void ValidatePattern(const Pattern& pattern, const std::string& what) {
       throw InputError(what + ": duplicate piece name '" + piece.name + "'");
     CheckPiece(piece, what);
   }
-  for (const Seam& seam : pattern.seams) CheckSeam(pattern, seam, what);
+  for (const Seam& seam : pattern.seams) CheckSeam(pattern, seam, what, seam_counts);
   std::set<std::string> ids;
   for (const MeasurementBinding& b : pattern.bindings) {
     if (!ids.insert(b.id).second) throw InputError(what + ": duplicate binding id '" + b.id + "'");

@@ -21,6 +21,7 @@
 #define BESPOKE_RESIZE_PATTERN_PATTERN_H_
 
 #include <Eigen/Core>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,27 @@ struct PieceLandmark {
   std::string datum;  // body datum point it is tied to (catalogue name), may be empty
   int vertex = -1;    // outline index, or -1 for a point inside the piece
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // mm; used when vertex < 0
+};
+
+// A run of outline vertices that lie on one straight line (a straight edge,
+// a fold or centre line), walking forward from `from` to `to`; resizing keeps
+// it straight (its inner vertices stay on the chord between its ends).
+struct StraightRun {
+  int from = 0, to = 0;
+  bool fold = false;  // a fold or centre line: it also keeps its direction to the grain
+};
+
+// A level line (chest, waist, hip, hem): two landmarks whose connecting line
+// stays perpendicular to the grain, i.e. keeps its direction in the piece.
+struct LevelLine {
+  std::string name;
+  std::string from, to;  // landmark names on the piece
+};
+
+// A dart: its two legs, apex to `leg_a` and apex to `leg_b` (outline
+// indices), keep equal lengths.
+struct Dart {
+  int apex = 0, leg_a = 0, leg_b = 0;
 };
 
 struct Piece {
@@ -48,6 +70,11 @@ struct Piece {
   int cut_count = 1;                                      // pieces to cut
   bool mirrored = false;                                  // cut as mirrored pairs (left/right)
   bool on_fold = false;                                   // cut on the fold (a half piece)
+  std::vector<StraightRun> straight;                      // straight edges, fold lines
+  std::vector<StraightRun> not_straight;  // ranges never inferred as straight (InferStructure)
+  std::vector<int> right_angles;  // outline indices of corners that stay square
+  std::vector<LevelLine> level_lines;
+  std::vector<Dart> darts;
 
   int num_vertices() const { return static_cast<int>(outline.rows()); }
   // Index of the landmark called `name`, or -1.
@@ -81,9 +108,18 @@ struct BindingTerm {
 
 struct MeasurementBinding {
   std::string id;           // unique, e.g. "chest"
-  std::string measurement;  // core measurement name, e.g. "chest_girth"
+  std::string measurement;  // catalogue measurement name, e.g. "chest_girth"; empty when fixed
   std::vector<BindingTerm> terms;
-  double ease_mm = 0;  // target = body measurement + ease
+  // Target = body measurement x (1 + ease_percent / 100) + ease_mm.
+  double ease_mm = 0;
+  double ease_percent = 0;
+  // "mm" or "percent": the ease is the base pattern's own at Pattern::base_body
+  // (ResolveKeptEase sets ease_mm or ease_percent); "" when given.
+  std::string keep_ease;
+  // A style dimension that does not grade (a cuff depth, a pocket width):
+  // target = the base pattern's own value; `measurement` is empty.
+  bool fixed = false;
+  double fixed_mm = 0;  // the kept value when `fixed` (mm)
 };
 
 struct Pattern {
@@ -92,6 +128,12 @@ struct Pattern {
   std::vector<Piece> pieces;
   std::vector<Seam> seams;
   std::vector<MeasurementBinding> bindings;
+  // What an importer did to the file's geometry (outlines turned
+  // counter-clockwise, seam runs resampled), one readable line each.
+  std::vector<std::string> notes;
+  // The body measurements the base pattern was drafted for (name -> mm); may
+  // be empty. Needed by bindings that keep the base's own ease.
+  std::map<std::string, double> base_body;
 
   // Index of the piece called `name`, or -1.
   int FindPiece(const std::string& name) const;
@@ -114,7 +156,9 @@ double SeamLength(const Piece& piece, const SeamSide& side);
 // self-intersecting outline, unknown pieces/landmarks, out-of-range indices,
 // seams whose sides have different point counts, outline terms on inside
 // landmarks. `what` names the file or design in messages.
-void ValidatePattern(const Pattern& pattern, const std::string& what);
+// Without `seam_counts`, seam sides of different point counts are accepted
+// (an importer resamples them next, EqualizeSeamCounts).
+void ValidatePattern(const Pattern& pattern, const std::string& what, bool seam_counts = true);
 
 }  // namespace bespoke
 
