@@ -196,8 +196,7 @@ void ParseSeamsAndBindings(const json& j, const std::string& what, bool keep_by_
     binding.id = Require<std::string>(b, "id", what + ": binding");
     const std::string where = what + ": binding '" + binding.id + "'";
     binding.fixed = Get<bool>(b, "fixed", false, where);
-    binding.measurement =
-        binding.fixed ? "" : Require<std::string>(b, "measurement", where);
+    binding.measurement = binding.fixed ? "" : Require<std::string>(b, "measurement", where);
     binding.ease_mm = Get<double>(b, "ease_mm", 0.0, where);
     binding.ease_percent = Get<double>(b, "ease_percent", 0.0, where);
     const std::string ease = Get<std::string>(b, "ease", "", where);
@@ -206,8 +205,8 @@ void ParseSeamsAndBindings(const json& j, const std::string& what, bool keep_by_
     if (!ease.empty() && (b.contains("ease_mm") || b.contains("ease_percent")))
       throw InputError(where + ": give \"ease\" or an ease value, not both");
     if (ease == "keep_percent") binding.keep_ease = "percent";
-    if (ease == "keep" || (ease.empty() && !b.contains("ease_mm") &&
-                           !b.contains("ease_percent") && keep_by_default))
+    if (!binding.fixed && (ease == "keep" || (ease.empty() && !b.contains("ease_mm") &&
+                                              !b.contains("ease_percent") && keep_by_default)))
       binding.keep_ease = "mm";
     for (const json& t : Require<json>(b, "terms", where)) {
       BindingTerm term;
