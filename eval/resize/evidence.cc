@@ -1,9 +1,9 @@
 #include "eval/resize/evidence.h"
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <Eigen/Core>
 
 #include "resize/designs/designs.h"
 #include "resize/ga/grading.h"
@@ -131,9 +131,8 @@ FitEvidence EvaluateFit(const ResizeOptions& options, const std::string& design,
   e.ga_to_draft = ComparePatterns(r.fitted, direct);
   e.grading_to_draft = ComparePatterns(r.seed, direct);
   for (const MeasurementBinding& b : base.bindings)
-    e.grading_max_binding_error_mm =
-        std::max(e.grading_max_binding_error_mm,
-                 std::abs(BindingValue(r.seed, b) - BindingTarget(b, body)));
+    e.grading_max_binding_error_mm = std::max(
+        e.grading_max_binding_error_mm, std::abs(BindingValue(r.seed, b) - BindingTarget(b, body)));
   e.time_s = r.ga_time_s + r.polish_time_s;
   e.polish_start = r.polish_start;
   if (patterns) *patterns = FitPatterns{r.fitted, direct, r.seed};

@@ -36,10 +36,10 @@ namespace bespoke {
 namespace {
 
 struct ResizeCommandOptions {
-  std::filesystem::path pattern;       // base pattern file, or
-  std::string design;                  // a built-in design
-  std::filesystem::path sidecar;       // optional landmarks/seams/bindings
-  std::filesystem::path measurements;  // MEAS.json / TRUTH.json / a Valentina .vit
+  std::filesystem::path pattern;            // base pattern file, or
+  std::string design;                       // a built-in design
+  std::filesystem::path sidecar;            // optional landmarks/seams/bindings
+  std::filesystem::path measurements;       // MEAS.json / TRUTH.json / a Valentina .vit
   std::filesystem::path base_measurements;  // the body the base pattern was drafted for
   std::filesystem::path out_dir;
   ResizeOptions resize;

@@ -65,10 +65,13 @@ BlockSet BuildBlocks(const BlockOptions& options, const Pattern& pattern) {
     }
     for (const StraightRun& r : piece.straight) {
       BlockRun run{r.from, r.to, {}, {}};
-      const Eigen::Vector2d a = piece.outline.row(r.from), d = Eigen::Vector2d(piece.outline.row(r.to)) - a;
-      for (int v = (r.from + 1) % piece.num_vertices(); v != r.to; v = (v + 1) % piece.num_vertices()) {
+      const Eigen::Vector2d a = piece.outline.row(r.from),
+                            d = Eigen::Vector2d(piece.outline.row(r.to)) - a;
+      for (int v = (r.from + 1) % piece.num_vertices(); v != r.to;
+           v = (v + 1) % piece.num_vertices()) {
         run.inner.push_back(v);
-        run.t.push_back((Eigen::Vector2d(piece.outline.row(v)) - a).dot(d) / std::max(d.squaredNorm(), 1e-12));
+        run.t.push_back((Eigen::Vector2d(piece.outline.row(v)) - a).dot(d) /
+                        std::max(d.squaredNorm(), 1e-12));
       }
       if (!run.inner.empty()) block.straight.push_back(std::move(run));
     }

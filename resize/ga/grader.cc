@@ -115,8 +115,7 @@ Eigen::VectorXd Shares(const FitnessModel& model, const Eigen::VectorXd& genes,
 }  // namespace
 
 void GraderOptions::Check() const {
-  if (!(isotropy_weight >= 0) || !(prior_weight > 0) || max_iterations < 0 ||
-      !(tolerance_mm > 0))
+  if (!(isotropy_weight >= 0) || !(prior_weight > 0) || max_iterations < 0 || !(tolerance_mm > 0))
     throw InputError("grader options: weights >= 0 (prior > 0), iterations >= 0, tolerance > 0");
 }
 

@@ -36,14 +36,14 @@ struct GraderOptions {
   // Weight keeping every term of a several-term binding at the binding's own
   // ratio (a girth's change shared by its pieces in proportion). Default 1.
   double share_weight = 1;
-  double prior_weight = 1e-4;    // weight pulling ratios to 1 (unchanged). Default 1e-4.
-  int max_iterations = 30;       // Gauss-Newton steps. Default 30.
-  double tolerance_mm = 0.01;    // constraint tolerance (mm). Default 0.01 mm.
-  void Check() const;            // InputError for negative weights or tolerance <= 0
+  double prior_weight = 1e-4;  // weight pulling ratios to 1 (unchanged). Default 1e-4.
+  int max_iterations = 30;     // Gauss-Newton steps. Default 30.
+  double tolerance_mm = 0.01;  // constraint tolerance (mm). Default 0.01 mm.
+  void Check() const;          // InputError for negative weights or tolerance <= 0
 };
 
 struct GradeResult {
-  Eigen::VectorXd genes;        // the graded control grids (model.blocks() layout, mm)
+  Eigen::VectorXd genes;         // the graded control grids (model.blocks() layout, mm)
   double max_constraint_mm = 0;  // largest binding or seam-length error left (mm)
   int iterations = 0;
 };

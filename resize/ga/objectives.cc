@@ -57,8 +57,7 @@ FitnessModel::FitnessModel(const Pattern& base, const BlockSet& blocks, const Me
     for (const Dart& d : piece.darts) darts_.push_back({k, d});
   }
   num_structure_ = static_cast<int>(directions_.size() + corners_.size() + darts_.size());
-  for (const MeasurementBinding& b : base.bindings)
-    targets_.push_back(BindingTarget(b, body));
+  for (const MeasurementBinding& b : base.bindings) targets_.push_back(BindingTarget(b, body));
   for (const Piece& piece : base.pieces) {
     base_turning_.push_back(TurningAngles(piece.outline));
     const Eigen::Index n = piece.outline.rows();
@@ -173,13 +172,15 @@ void FitnessModel::Structure(const Eigen::VectorXd& genes, const std::vector<Out
   for (size_t c = 0; c < corners_.size(); ++c) {
     const Outline& o = outlines[corners_[c].first];
     const int n = static_cast<int>(o.rows()), v = corners_[c].second;
-    const Eigen::Vector2d e0 = o.row(v) - o.row((v - 1 + n) % n), e1 = o.row((v + 1) % n) - o.row(v);
+    const Eigen::Vector2d e0 = o.row(v) - o.row((v - 1 + n) % n),
+                          e1 = o.row((v + 1) % n) - o.row(v);
     const double turning = std::atan2(e0.x() * e1.y() - e0.y() * e1.x(), e0.dot(e1));
     out->push_back(WrapAngle(turning - corner_turning_[c]) * kAngleScaleMm);
   }
   for (const auto& [p, d] : darts_) {
     const Outline& o = outlines[p];
-    out->push_back((o.row(d.leg_a) - o.row(d.apex)).norm() - (o.row(d.leg_b) - o.row(d.apex)).norm());
+    out->push_back((o.row(d.leg_a) - o.row(d.apex)).norm() -
+                   (o.row(d.leg_b) - o.row(d.apex)).norm());
   }
 }
 

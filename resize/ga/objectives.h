@@ -67,14 +67,12 @@ class FitnessModel {
   int num_structure() const { return num_structure_; }
 
   // For the polish: hard constraints (binding errors, seam length
-  // mismatches, then the structure rules; mm) and soft residuals (turning-angle changes at every outline
-  // edge's direction change scaled by `angle_scale_mm` per radian (keeps
-  // inner angles and the piece's orientation to the grain), paired-edge
-  // differences in mm, paired seam-angle differences scaled likewise).
-  // With `only_piece` >= 0 and `reuse_soft` (the soft residuals of genes that
-  // differ from these only in that piece's control points), soft entries that
-  // do not depend on that piece are copied instead of recomputed (for the
-  // polish's finite differences).
+  // mismatches, then the structure rules; mm) and soft residuals (turning-angle changes at every
+  // outline edge's direction change scaled by `angle_scale_mm` per radian (keeps inner angles and
+  // the piece's orientation to the grain), paired-edge differences in mm, paired seam-angle
+  // differences scaled likewise). With `only_piece` >= 0 and `reuse_soft` (the soft residuals of
+  // genes that differ from these only in that piece's control points), soft entries that do not
+  // depend on that piece are copied instead of recomputed (for the polish's finite differences).
   // With `length_scale_mm` > 0 the soft residuals also hold, per outline
   // edge, its relative length change from the base pattern scaled by
   // `length_scale_mm` (length_scale_mm x (length / base length - 1)).

@@ -83,36 +83,37 @@ std::vector<StructureFigures> StructureChanges(const Pattern& base, const Patter
     f.piece = a.name;
     std::vector<bool> on_run(n, false);
     for (const StraightRun& r : a.straight) {
-      const Eigen::Vector2d p0 = b.outline.row(r.from), d = Eigen::Vector2d(b.outline.row(r.to)) - p0;
+      const Eigen::Vector2d p0 = b.outline.row(r.from),
+                            d = Eigen::Vector2d(b.outline.row(r.to)) - p0;
       for (int v = r.from; v != r.to; v = (v + 1) % n) {
         on_run[v] = true;
         const Eigen::Vector2d q = Eigen::Vector2d(b.outline.row(v)) - p0;
-        f.max_kink_mm =
-            std::max(f.max_kink_mm, std::abs(d.x() * q.y() - d.y() * q.x()) / std::max(d.norm(), 1e-9));
+        f.max_kink_mm = std::max(
+            f.max_kink_mm, std::abs(d.x() * q.y() - d.y() * q.x()) / std::max(d.norm(), 1e-9));
       }
       on_run[r.to] = true;
       if (r.fold)
-        f.max_fold_tilt_deg = std::max(
-            f.max_fold_tilt_deg,
-            DirectionDeg(Eigen::Vector2d(a.outline.row(r.to) - a.outline.row(r.from)), d));
+        f.max_fold_tilt_deg =
+            std::max(f.max_fold_tilt_deg,
+                     DirectionDeg(Eigen::Vector2d(a.outline.row(r.to) - a.outline.row(r.from)), d));
     }
     for (const LevelLine& l : a.level_lines) {
       const int i = a.FindLandmark(l.from), j = a.FindLandmark(l.to);
-      f.max_level_tilt_deg = std::max(
-          f.max_level_tilt_deg, DirectionDeg(a.LandmarkPosition(j) - a.LandmarkPosition(i),
-                                             b.LandmarkPosition(j) - b.LandmarkPosition(i)));
+      f.max_level_tilt_deg = std::max(f.max_level_tilt_deg,
+                                      DirectionDeg(a.LandmarkPosition(j) - a.LandmarkPosition(i),
+                                                   b.LandmarkPosition(j) - b.LandmarkPosition(i)));
     }
     if (a.has_grain)
-      f.max_grain_tilt_deg =
-          DirectionDeg(a.grain_end - a.grain_start, b.grain_end - b.grain_start);
+      f.max_grain_tilt_deg = DirectionDeg(a.grain_end - a.grain_start, b.grain_end - b.grain_start);
     const Eigen::VectorXd ta = TurningAngles(a.outline), tb = TurningAngles(b.outline);
     for (int v : a.right_angles)
       f.max_corner_change_deg =
           std::max(f.max_corner_change_deg, std::abs(Wrap(tb[v] - ta[v])) * 180 / M_PI);
     for (const Dart& d : a.darts)
       f.max_dart_mismatch_mm =
-          std::max(f.max_dart_mismatch_mm, std::abs((b.outline.row(d.leg_a) - b.outline.row(d.apex)).norm() -
-                                                    (b.outline.row(d.leg_b) - b.outline.row(d.apex)).norm()));
+          std::max(f.max_dart_mismatch_mm,
+                   std::abs((b.outline.row(d.leg_a) - b.outline.row(d.apex)).norm() -
+                            (b.outline.row(d.leg_b) - b.outline.row(d.apex)).norm()));
     f.new_inflections = std::max(0, Inflections(tb, on_run) - Inflections(ta, on_run));
     all.push_back(f);
   }

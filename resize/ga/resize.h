@@ -79,8 +79,8 @@ struct ResizeResult {
   std::vector<GenerationStats> history;
   Pattern seed;  // proportional scaling (Algorithm 6)
   Objectives seed_objectives;
-  Pattern graded;                   // the graded start (grader.h), or the seed when off
-  double graded_constraint_mm = 0;  // largest binding / seam error the grader left (mm)
+  Pattern graded;                               // the graded start (grader.h), or the seed when off
+  double graded_constraint_mm = 0;              // largest binding / seam error the grader left (mm)
   std::vector<double> targets_mm, achieved_mm;  // per binding
   std::vector<double> seam_mismatch_mm;         // per seam: length(a) - length(b) - ease
   double ga_time_s = 0, polish_time_s = 0;

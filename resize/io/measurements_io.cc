@@ -52,7 +52,8 @@ MeasurementSet MeasurementsFromVit(const std::string& text, const std::string& w
        it != std::sregex_iterator(); ++it) {
     const std::string attributes = (*it)[1];
     std::smatch n, v;
-    if (!std::regex_search(attributes, n, name_attr) || !std::regex_search(attributes, v, value_attr))
+    if (!std::regex_search(attributes, n, name_attr) ||
+        !std::regex_search(attributes, v, value_attr))
       throw InputError(what + ": a measurement <m> needs name and value");
     const std::string name = n[1], value_text = Trim(v[1]);
     double value = 0;

@@ -97,7 +97,9 @@ void InsertAtFractions(Pattern* pattern, const SeamSide& side, const std::vector
 void ReplaceOutline(Pattern* pattern, int p, const Outline& outline,
                     const std::vector<int>& old_to_new, bool reversed) {
   Piece& piece = pattern->pieces[p];
-  auto map = [&](int v) { return v >= 0 && v < static_cast<int>(old_to_new.size()) ? old_to_new[v] : v; };
+  auto map = [&](int v) {
+    return v >= 0 && v < static_cast<int>(old_to_new.size()) ? old_to_new[v] : v;
+  };
   for (int& c : piece.critical) c = map(c);
   for (int& c : piece.notches) c = map(c);
   for (int& c : piece.right_angles) c = map(c);
@@ -151,8 +153,8 @@ void EqualizeSeamCounts(Pattern* pattern, double merge_mm) {
     const std::vector<int> ia = SeamIndices(seam.a, static_cast<int>(oa.rows()));
     const std::vector<int> ib = SeamIndices(seam.b, static_cast<int>(ob.rows()));
     if (ia.size() == ib.size() || ia.size() < 2 || ib.size() < 2) continue;
-    const double length = std::max(SeamLength(pattern->pieces[pa], seam.a),
-                                   SeamLength(pattern->pieces[pb], seam.b));
+    const double length =
+        std::max(SeamLength(pattern->pieces[pa], seam.a), SeamLength(pattern->pieces[pb], seam.b));
     const double merge = merge_mm / std::max(length, 1e-9);
     // Sorted union of both sides' fractions; a cluster holds at most one
     // vertex of each side, so both sides end with one point per cluster.
@@ -222,8 +224,8 @@ void InferStructure(const StructureOptions& options, Pattern* pattern) {
     std::vector<StraightRun> found;
     for (int i = 0; i < n; ++i) {
       int j = i + 2;
-      while (j - i < n && ChordDeviation(o, Forward(i, Wrap(j, n), n)) <=
-                              options.straight_tolerance_mm)
+      while (j - i < n &&
+             ChordDeviation(o, Forward(i, Wrap(j, n), n)) <= options.straight_tolerance_mm)
         ++j;
       const int end = j - 1;  // last vertex that kept the run straight
       if (end - i < 1) continue;

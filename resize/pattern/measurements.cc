@@ -123,7 +123,8 @@ void CheckBindingsAgainst(const Pattern& pattern, const MeasurementSet& values,
     if (b.fixed) continue;
     if (!IsBindableMeasurement(b.measurement))
       throw InputError(what + ": binding '" + b.id + "' uses unknown measurement '" +
-                       b.measurement + "' (bindings use the catalogue's names, docs/measurements.md)");
+                       b.measurement +
+                       "' (bindings use the catalogue's names, docs/measurements.md)");
     if (!values.count(b.measurement))
       throw InputError(what + ": measurement '" + b.measurement + "' needed by binding '" + b.id +
                        "' is missing from " + where);

@@ -72,7 +72,7 @@ struct Piece {
   bool on_fold = false;                                   // cut on the fold (a half piece)
   std::vector<StraightRun> straight;                      // straight edges, fold lines
   std::vector<StraightRun> not_straight;  // ranges never inferred as straight (InferStructure)
-  std::vector<int> right_angles;  // outline indices of corners that stay square
+  std::vector<int> right_angles;          // outline indices of corners that stay square
   std::vector<LevelLine> level_lines;
   std::vector<Dart> darts;
 
