@@ -7,6 +7,7 @@
 
 #include "resize/designs/designs.h"
 #include "resize/ga/grading.h"
+#include "resize/ga/report.h"
 #include "resize/pattern/geometry.h"
 #include "scanners/core/errors.h"
 
@@ -54,7 +55,8 @@ double ToOutline(const Eigen::Vector2d& p, const Outline& o) {
 
 }  // namespace
 
-PatternDistance CompareOutlineShapes(const Outline& a, const Outline& b_in, double step_mm) {
+PatternDistance CompareOutlineShapes(const Outline& a, const Outline& b_in, double step_mm,
+                                     Eigen::Matrix<double, 2, 3>* placement) {
   const std::vector<Eigen::Vector2d> sa = Sample(a, 4 * step_mm);
   Outline b = b_in;
   Eigen::Vector2d ca = Eigen::Vector2d::Zero(), cb = Eigen::Vector2d::Zero();
@@ -64,6 +66,8 @@ PatternDistance CompareOutlineShapes(const Outline& a, const Outline& b_in, doub
   for (const auto& p : sb) cb += p;
   cb /= static_cast<double>(sb.size());
   b.rowwise() += (ca - cb).transpose();
+  Eigen::Matrix2d rotation = Eigen::Matrix2d::Identity();  // b = rotation b_in + shift
+  Eigen::Vector2d shift = ca - cb;
   for (int it = 0; it < 40; ++it) {
     sb = Sample(b, 4 * step_mm);
     // Pairs: every sample of b with its nearest sample of a.
@@ -85,6 +89,8 @@ PatternDistance CompareOutlineShapes(const Outline& a, const Outline& b_in, doub
     r << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
     for (Eigen::Index v = 0; v < b.rows(); ++v)
       b.row(v) = (r * (Eigen::Vector2d(b.row(v)) - mb) + ma).transpose();
+    rotation = r * rotation;
+    shift = r * (shift - mb) + ma;
     if (std::abs(angle) < 1e-7 && (ma - mb).norm() < 1e-6) break;
   }
   PatternDistance d;
@@ -99,7 +105,14 @@ PatternDistance CompareOutlineShapes(const Outline& a, const Outline& b_in, doub
       ++count;
     }
   d.mean_mm = sum / static_cast<double>(std::max<size_t>(count, 1));
+  if (placement != nullptr) *placement << rotation, shift;
   return d;
+}
+
+bool FitEvidence::Passes() const {
+  return max_binding_error_mm <= 1 && max_seam_mismatch_mm <= 1 && outlines_simple &&
+         ga_to_draft.mean_mm < grading_to_draft.mean_mm && max_kink_mm <= 1 &&
+         max_tilt_deg <= 0.5 && new_inflections == 0;
 }
 
 FitEvidence EvaluateFit(const ResizeOptions& options, const std::string& design,
@@ -130,9 +143,17 @@ FitEvidence EvaluateFit(const ResizeOptions& options, const std::string& design,
   e.draft_shape_deg = change / static_cast<double>(std::max<Eigen::Index>(vertices, 1));
   e.ga_to_draft = ComparePatterns(r.fitted, direct);
   e.grading_to_draft = ComparePatterns(r.seed, direct);
-  for (const MeasurementBinding& b : base.bindings)
-    e.grading_max_binding_error_mm = std::max(
-        e.grading_max_binding_error_mm, std::abs(BindingValue(r.seed, b) - BindingTarget(b, body)));
+  e.graded_to_draft = ComparePatterns(r.graded, direct);
+  for (const StructureFigures& s : StructureChanges(base, r.fitted)) {
+    e.max_kink_mm = std::max(e.max_kink_mm, s.max_kink_mm);
+    e.max_tilt_deg =
+        std::max({e.max_tilt_deg, s.max_level_tilt_deg, s.max_fold_tilt_deg, s.max_grain_tilt_deg});
+    e.new_inflections += s.new_inflections;
+  }
+  for (size_t b = 0; b < base.bindings.size(); ++b)
+    e.grading_max_binding_error_mm =
+        std::max(e.grading_max_binding_error_mm,
+                 std::abs(BindingValue(r.seed, base.bindings[b]) - r.targets_mm[b]));
   e.time_s = r.ga_time_s + r.polish_time_s;
   e.polish_start = r.polish_start;
   if (patterns) *patterns = FitPatterns{r.fitted, direct, r.seed};

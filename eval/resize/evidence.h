@@ -28,8 +28,10 @@ PatternDistance ComparePatterns(const Pattern& a, const Pattern& b);
 // rigidly aligned onto `a` (rotation + translation, iterative closest points
 // from the centroids), then the mean and max over both outlines, sampled
 // every `step_mm` of arc length, of each sample's distance to the other
-// outline (mm).
-PatternDistance CompareOutlineShapes(const Outline& a, const Outline& b, double step_mm = 2);
+// outline (mm). With `placement`, the rigid map [R | t] that aligned `b`
+// (b's point p lands at R p + t).
+PatternDistance CompareOutlineShapes(const Outline& a, const Outline& b, double step_mm = 2,
+                                     Eigen::Matrix<double, 2, 3>* placement = nullptr);
 
 struct FitEvidence {
   double max_binding_error_mm = 0;   // largest |achieved - target|
@@ -40,9 +42,20 @@ struct FitEvidence {
   double critical_shape_deg = 0;     // at critical points (deg)
   PatternDistance ga_to_draft;       // fitted vs drafted for the body
   PatternDistance grading_to_draft;  // proportional grading vs drafted for the body
+  PatternDistance graded_to_draft;   // the graded start vs drafted for the body
   double grading_max_binding_error_mm = 0;
+  // Structure of the fit against the base (report.h StructureChanges), worst
+  // over the pieces: kink on a straight run (mm), tilt of a level line, fold
+  // or grain line (deg), and the new inflections summed over the pieces.
+  double max_kink_mm = 0;
+  double max_tilt_deg = 0;
+  int new_inflections = 0;
   double time_s = 0;         // GA + polish
-  std::string polish_start;  // "ga", "seed" or "base" (ResizeResult::polish_start)
+  std::string polish_start;  // "ga" or "graded" (ResizeResult::polish_start)
+  // Every check of the evidence run met: bindings and seams within 1 mm,
+  // simple outlines, closer to the draft than grading, no kink > 1 mm, no
+  // tilt > 0.5 deg, no new inflection.
+  bool Passes() const;
 };
 
 // The three patterns EvaluateFit compares (for inspecting a result).

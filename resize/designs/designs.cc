@@ -1,5 +1,6 @@
 #include "resize/designs/designs.h"
 
+#include "resize/pattern/edit.h"
 #include "resize/pattern/geometry.h"
 #include "scanners/core/errors.h"
 
@@ -41,14 +42,19 @@ Pattern DraftDesign(const std::string& design, const MeasurementSet& given) {
     pattern = DraftTrousers(measurements);
   else
     throw InputError("unknown design '" + design + "' (known: shirt, trousers)");
-  // Design ease: what the draft gives minus the body measurement; seam ease:
+  // Design ease (fixed bindings have none): what the draft gives minus the
+  // body measurement; seam ease:
   // the drafted length difference (e.g. sleeve-head ease), so the draft meets
   // its own bindings and seams exactly.
   for (MeasurementBinding& b : pattern.bindings)
-    b.ease_mm = BindingValue(pattern, b) - Need(measurements, b.measurement, design);
+    if (!b.fixed) b.ease_mm = BindingValue(pattern, b) - Need(measurements, b.measurement, design);
   for (Seam& s : pattern.seams)
     s.ease_mm = SeamLength(pattern.pieces[pattern.FindPiece(s.a.piece)], s.a) -
                 SeamLength(pattern.pieces[pattern.FindPiece(s.b.piece)], s.b);
+  // The design's structure, as an importer infers it (straight edges, folds,
+  // square corners), so resizing keeps it.
+  InferStructure(StructureOptions{}, &pattern);
+  AddStructureCriticalPoints(&pattern);
   for (const Piece& piece : pattern.pieces)
     if (FindSelfIntersection(piece.outline).first >= 0)
       throw InputError("design " + design + ": measurements out of the drafting range (piece '" +

@@ -222,6 +222,19 @@ Pattern DraftTrousers(const MeasurementSet& m) {
   // (2 and 5 mm across).
   bind("front_seat_line", "body_rise", {term("front", "side_seat", "side_crotch", S, 4)});
   bind("back_seat_line", "body_rise", {term("back", "side_crotch", "side_seat", S, 4)});
+  // The hem widths are style widths of the draft, the same for every body:
+  // fixed, so resizing keeps them instead of grading them.
+  auto fix = [&](const char* id, const char* piece, const char* from, const char* to,
+                 double width_mm) {
+    MeasurementBinding b;
+    b.id = id;
+    b.fixed = true;
+    b.fixed_mm = width_mm;
+    b.terms = {term(piece, from, to, S, 1)};
+    p.bindings.push_back(b);
+  };
+  fix("front_hem", "front", "hem_out", "hem_in", kFrontHem);
+  fix("back_hem", "back", "hem_in", "hem_out", kBackHem);
   return p;
 }
 

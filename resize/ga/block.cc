@@ -1,6 +1,9 @@
 #include "resize/ga/block.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include "resize/pattern/geometry.h"
 
 namespace bespoke {
 namespace {
@@ -16,6 +19,9 @@ std::vector<double> GridLines(std::vector<double> values, double lo, double hi, 
   return lines;
 }
 
+// A vertex turning less than this lies on its neighbours' chord (rad).
+constexpr double kChordRad = 1e-7;
+
 std::pair<int, double> Locate(const std::vector<double>& lines, double v) {
   const int n = static_cast<int>(lines.size());
   int i = static_cast<int>(std::upper_bound(lines.begin(), lines.end(), v) - lines.begin()) - 1;
@@ -23,15 +29,80 @@ std::pair<int, double> Locate(const std::vector<double>& lines, double v) {
   return {i, (v - lines[i]) / (lines[i + 1] - lines[i])};
 }
 
+// Weights on lines i - 1 .. i + 2 of the value at position s of interval i:
+// cubic Hermite with Catmull-Rom tangents for uneven spacing (the slope of
+// the parabola through the node and its two neighbours; one-sided at the
+// grid's ends), linear outside [0, 1].
+void Weights1d(const std::vector<double>& lines, int i, double s, double w[4]) {
+  const int n = static_cast<int>(lines.size());
+  for (int a = 0; a < 4; ++a) w[a] = 0;
+  if (s < 0 || s > 1) {
+    w[1] = 1 - s;
+    w[2] = s;
+    return;
+  }
+  const double h = lines[i + 1] - lines[i];
+  // Tangent at node k as weights on nodes k - 1, k, k + 1 (offsets into w).
+  auto tangent = [&](int k, double scale, int at) {
+    const bool left = k > 0, right = k + 1 < n;
+    if (left && right) {
+      const double hl = lines[k] - lines[k - 1], hr = lines[k + 1] - lines[k];
+      w[at - 1] += scale * -hr / (hl * (hl + hr));
+      w[at] += scale * (hr / hl - hl / hr) / (hl + hr);
+      w[at + 1] += scale * hl / (hr * (hl + hr));
+    } else if (right) {
+      const double hr = lines[k + 1] - lines[k];
+      w[at] -= scale / hr;
+      w[at + 1] += scale / hr;
+    } else {
+      const double hl = lines[k] - lines[k - 1];
+      w[at - 1] -= scale / hl;
+      w[at] += scale / hl;
+    }
+  };
+  const double s2 = s * s, s3 = s2 * s;
+  w[1] += 2 * s3 - 3 * s2 + 1;
+  w[2] += -2 * s3 + 3 * s2;
+  tangent(i, h * (s3 - 2 * s2 + s), 1);
+  tangent(i + 1, h * (s3 - s2), 2);
+}
+
 GridParam Param(const std::vector<double>& xs, const std::vector<double>& ys,
                 const Eigen::Vector2d& p) {
   GridParam g;
   std::tie(g.i, g.s) = Locate(xs, p.x());
   std::tie(g.j, g.t) = Locate(ys, p.y());
+  g.i0 = g.i - 1;
+  g.j0 = g.j - 1;
+  Weights1d(xs, g.i, g.s, g.wx);
+  Weights1d(ys, g.j, g.t, g.wy);
+  for (double* w : {g.wx, g.wy})
+    for (int a = 0; a < 4; ++a)
+      if (std::abs(w[a]) < 1e-15) w[a] = 0;
   return g;
 }
 
 }  // namespace
+
+std::vector<StraightRun> KeptStraightRuns(const Piece& piece) {
+  std::vector<StraightRun> runs = piece.straight;
+  const int n = piece.num_vertices();
+  std::vector<bool> on_run(n, false);
+  for (const StraightRun& r : piece.straight)
+    for (int v = r.from;; v = (v + 1) % n) {
+      on_run[v] = true;
+      if (v == r.to) break;
+    }
+  const Eigen::VectorXd turning = TurningAngles(piece.outline);
+  auto chord_point = [&](int v) { return !on_run[v] && std::abs(turning[v]) < kChordRad; };
+  for (int v = 0; v < n; ++v) {
+    if (!chord_point(v) || chord_point((v - 1 + n) % n)) continue;
+    int end = v;
+    for (int k = 0; k < n && chord_point(end); ++k) end = (end + 1) % n;
+    if (end != (v - 1 + n) % n) runs.push_back({(v - 1 + n) % n, end, false});
+  }
+  return runs;
+}
 
 BlockSet BuildBlocks(const BlockOptions& options, const Pattern& pattern) {
   BlockSet set;
@@ -51,6 +122,8 @@ BlockSet BuildBlocks(const BlockOptions& options, const Pattern& pattern) {
     block.offset = set.num_genes;
     block.extent_x = hi.x() - lo.x();
     block.extent_y = hi.y() - lo.y();
+    block.xs = xs;
+    block.ys = ys;
     for (int v = 0; v < piece.num_vertices(); ++v)
       block.outline.push_back(Param(xs, ys, piece.outline.row(v).transpose()));
     for (int l = 0; l < static_cast<int>(piece.landmarks.size()); ++l)
@@ -63,17 +136,29 @@ BlockSet BuildBlocks(const BlockOptions& options, const Pattern& pattern) {
         params.push_back(Param(xs, ys, line.row(r).transpose()));
       block.internal_lines.push_back(params);
     }
-    for (const StraightRun& r : piece.straight) {
-      BlockRun run{r.from, r.to, {}, {}};
-      const Eigen::Vector2d a = piece.outline.row(r.from),
-                            d = Eigen::Vector2d(piece.outline.row(r.to)) - a;
-      for (int v = (r.from + 1) % piece.num_vertices(); v != r.to;
-           v = (v + 1) % piece.num_vertices()) {
-        run.inner.push_back(v);
-        run.t.push_back((Eigen::Vector2d(piece.outline.row(v)) - a).dot(d) /
-                        std::max(d.squaredNorm(), 1e-12));
+    // Runs kept straight, split at their critical vertices: between those a
+    // run stretches evenly (its inner vertices keep their fractions of the
+    // chord); the critical vertices themselves follow the grid, and the
+    // constraints keep them on the run's line (FitnessModel::Constraints).
+    std::vector<bool> critical(piece.num_vertices(), false);
+    for (int c : piece.critical) critical[c] = true;
+    const int n = piece.num_vertices();
+    for (const StraightRun& r : KeptStraightRuns(piece)) {
+      int from = r.from;
+      for (int v = (r.from + 1) % n;; v = (v + 1) % n) {
+        if (v != r.to && !critical[v]) continue;
+        BlockRun run{from, v, {}, {}};
+        const Eigen::Vector2d a = piece.outline.row(from),
+                              d = Eigen::Vector2d(piece.outline.row(v)) - a;
+        for (int w = (from + 1) % n; w != v; w = (w + 1) % n) {
+          run.inner.push_back(w);
+          run.t.push_back((Eigen::Vector2d(piece.outline.row(w)) - a).dot(d) /
+                          std::max(d.squaredNorm(), 1e-12));
+        }
+        if (!run.inner.empty()) block.straight.push_back(std::move(run));
+        from = v;
+        if (v == r.to) break;
       }
-      if (!run.inner.empty()) block.straight.push_back(std::move(run));
     }
     set.num_genes += 2 * block.nu * block.nv;
     set.base_genes.conservativeResize(set.num_genes);
@@ -89,11 +174,28 @@ BlockSet BuildBlocks(const BlockOptions& options, const Pattern& pattern) {
 
 Eigen::Vector2d EvalParam(const Block& b, const double* genes, const GridParam& p) {
   const double* g = genes + b.offset;
-  const int k00 = 2 * (p.j * b.nu + p.i), k10 = k00 + 2, k01 = k00 + 2 * b.nu, k11 = k01 + 2;
-  const double w00 = (1 - p.s) * (1 - p.t), w10 = p.s * (1 - p.t), w01 = (1 - p.s) * p.t,
-               w11 = p.s * p.t;
-  return {w00 * g[k00] + w10 * g[k10] + w01 * g[k01] + w11 * g[k11],
-          w00 * g[k00 + 1] + w10 * g[k10 + 1] + w01 * g[k01 + 1] + w11 * g[k11 + 1]};
+  double x = 0, y = 0;
+  for (int c = 0; c < 4; ++c) {
+    if (p.wy[c] == 0) continue;
+    const int row = (p.j0 + c) * b.nu + p.i0;  // zero weights mark nodes beyond the grid
+    double rx = 0, ry = 0;
+    for (int a = 0; a < 4; ++a) {
+      if (p.wx[a] == 0) continue;
+      rx += p.wx[a] * g[2 * (row + a)];
+      ry += p.wx[a] * g[2 * (row + a) + 1];
+    }
+    x += p.wy[c] * rx;
+    y += p.wy[c] * ry;
+  }
+  return {x, y};
+}
+
+void ParamStencil(const Block& b, const GridParam& p, std::vector<std::pair<int, double>>* out) {
+  out->clear();
+  for (int c = 0; c < 4; ++c)
+    for (int a = 0; a < 4; ++a)
+      if (p.wx[a] != 0 && p.wy[c] != 0)
+        out->push_back({b.offset / 2 + (p.j0 + c) * b.nu + p.i0 + a, p.wx[a] * p.wy[c]});
 }
 
 void EvalOutline(const Block& block, const double* genes, Outline* out) {

@@ -1,54 +1,52 @@
 // The graded start: the base pattern graded to the body the way a grader
 // grades, before the GA and the polish refine it.
 //
-// Each piece's control grid (block.h) is kept rectilinear: its vertical grid
-// lines move as a whole along x and its horizontal ones along y, so the
-// piece is stretched by a piecewise-linear map x' = f(x), y' = g(y). That
-// keeps lines along the grid straight and level (a chest, waist or hem line
-// stays perpendicular to a vertical grain; folds and square corners stay),
-// as grade rules that move cardinal points in x and y do. The unknowns are
-// the log stretch ratios of every grid interval; the grader solves
-//
-//   minimise   sum over neighbouring intervals (log r_i - log r_{i+1})^2
-//            + isotropy_weight x sum over pieces (mean log r_x - mean log r_y)^2
-//            + prior_weight x sum (log r_i)^2
-//            + share_weight x sum over terms of several-term bindings
-//                (log(term / base term) - log(target / base value))^2
-//   subject to every binding and every seam's total length being met
-//
-// by Gauss-Newton steps on the KKT system (constraint Jacobian by forward
-// differences). The smoothness term makes an interval no binding reaches take
-// the ratio of the nearest bound intervals along its chain (interpolated
-// between them, constant beyond them); a piece's axis that no binding or seam
-// drives follows its other axis (the isotropy term), and a piece nothing
-// drives at all keeps its size (the prior).
+// A grader moves a piece's cardinal points in x and y by grade rules that
+// change smoothly over the piece; lines along the grid stay straight and
+// level, so chest, waist and hem lines stay perpendicular to a vertical
+// grain and folds and square corners stay. Here every driven piece's
+// control grid (block.h) moves so as to minimise the grid energy
+// (grid_energy.h: a smooth stretch, rows and columns stretched alike, edges
+// keeping their direction), plus, for every binding with several terms,
+// share_weight x (term / base term - target / base value)^2 (a girth's
+// change shared by its pieces in proportion, as proportional grading
+// shares it), subject to every binding, every seam's total length and every
+// structure rule (folds, level lines, grain lines, square corners, darts)
+// being met (solve.h). A grid that only needs its lines moved as a whole
+// stays rectilinear (x' = f(x), y' = g(y)); where the bindings ask more (a
+// waist that grows faster than the chest takes out a side seam's
+// suppression), the change spreads smoothly over the grid. An interval no
+// binding reaches takes the stretch of its bound neighbours; a piece's axis
+// nothing drives follows its other axis (the isotropy term); a piece no
+// binding or seam reaches is not touched.
 #ifndef BESPOKE_RESIZE_GA_GRADER_H_
 #define BESPOKE_RESIZE_GA_GRADER_H_
 
 #include <Eigen/Core>
 
+#include "resize/ga/grid_energy.h"
 #include "resize/ga/objectives.h"
 
 namespace bespoke {
 
 struct GraderOptions {
-  double isotropy_weight = 0.01;  // weight of the x / y ratio agreement per piece. Default 0.01.
+  GridEnergyOptions energy;  // the smoothness of the grade (grid_energy.h)
   // Weight keeping every term of a several-term binding at the binding's own
   // ratio (a girth's change shared by its pieces in proportion). Default 1.
   double share_weight = 1;
-  double prior_weight = 1e-4;  // weight pulling ratios to 1 (unchanged). Default 1e-4.
-  int max_iterations = 30;     // Gauss-Newton steps. Default 30.
+  int max_iterations = 40;     // Gauss-Newton steps. Default 40.
   double tolerance_mm = 0.01;  // constraint tolerance (mm). Default 0.01 mm.
-  void Check() const;          // InputError for negative weights or tolerance <= 0
+  double min_gap_mm = 0.1;     // grid ordering gap (mm). Default 0.1 mm.
+  void Check() const;          // InputError for values out of range
 };
 
 struct GradeResult {
   Eigen::VectorXd genes;         // the graded control grids (model.blocks() layout, mm)
-  double max_constraint_mm = 0;  // largest binding or seam-length error left (mm)
+  double max_constraint_mm = 0;  // largest binding, seam or structure error left (mm)
   int iterations = 0;
 };
 
-// Grades model.base() to the model's targets.
+// Grades model.base() to the model's targets, starting from its base grids.
 GradeResult Grade(const GraderOptions& options, const FitnessModel& model);
 
 }  // namespace bespoke

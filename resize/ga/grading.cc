@@ -8,11 +8,13 @@ std::vector<double> ProportionalScales(const Pattern& pattern, const Measurement
   const size_t n = pattern.pieces.size();
   std::vector<double> scale(n, 0.0);
   std::vector<bool> known(n, false);
-  for (const MeasurementBinding& b : pattern.bindings) {
+  const std::vector<double> targets = BindingTargets(pattern, body);
+  for (size_t i = 0; i < pattern.bindings.size(); ++i) {
+    const MeasurementBinding& b = pattern.bindings[i];
     const double current = BindingValue(pattern, b);
     if (current <= 0) continue;
     // Sr = m_i / d (Algorithm 6 line 6), with the ease kept: target / current.
-    const double ratio = BindingTarget(b, body) / current;
+    const double ratio = targets[i] / current;
     for (const BindingTerm& t : b.terms) {
       const int p = pattern.FindPiece(t.piece);
       scale[p] = known[p] ? std::max(scale[p], ratio) : ratio;  // largest Sr (line 8)

@@ -8,6 +8,7 @@ namespace bespoke {
 namespace {
 
 constexpr double kDeg = 180.0 / M_PI;
+constexpr double kFlatRad = 1e-3;  // a curve vertex turning less is flat
 
 double Turning(const Outline& o, const std::vector<int>& idx, size_t k) {
   const Eigen::Vector2d a = o.row(idx[k]) - o.row(idx[k - 1]);
@@ -28,47 +29,125 @@ void SeamEdges(const Outline& o, const std::vector<int>& idx, std::vector<double
     (*edges)[k] = (o.row(idx[k + 1]) - o.row(idx[k])).norm();
 }
 
+// Outline vertices walked forward from `from` to `to` inclusive.
+std::vector<int> ForwardPath(int from, int to, int n) {
+  std::vector<int> path = {from};
+  for (int v = from; v != to;) {
+    v = (v + 1) % n;
+    path.push_back(v);
+  }
+  return path;
+}
+
 }  // namespace
 
-FitnessModel::FitnessModel(const Pattern& base, const BlockSet& blocks, const MeasurementSet& body,
-                           const Pattern* structure)
-    : base_(base), blocks_(blocks) {
-  const Pattern& ref = structure ? *structure : base;
-  for (size_t p = 0; p < ref.pieces.size(); ++p) {
-    const Piece& piece = ref.pieces[p];
-    const int k = static_cast<int>(p);
+FitnessModel::FitnessModel(const Pattern& base, const BlockSet& blocks, const MeasurementSet& body)
+    : base_(base), blocks_(blocks), driven_(base.pieces.size(), false) {
+  for (const MeasurementBinding& b : base.bindings)
+    for (const BindingTerm& t : b.terms) driven_[base.FindPiece(t.piece)] = true;
+  for (const Seam& s : base.seams)
+    driven_[base.FindPiece(s.a.piece)] = driven_[base.FindPiece(s.b.piece)] = true;
+  // Stencils of every point; inner vertices of straight runs follow their ends.
+  std::vector<std::pair<int, double>> st;
+  for (size_t p = 0; p < base.pieces.size(); ++p) {
+    const Block& block = blocks.blocks[p];
+    std::vector<Stencil> stencils;
+    for (const GridParam& g : block.outline) {
+      ParamStencil(block, g, &st);
+      stencils.push_back(st);
+    }
+    for (const BlockRun& r : block.straight)
+      for (size_t k = 0; k < r.inner.size(); ++k) {
+        Stencil combined;
+        for (const auto& [c, w] : stencils[r.from]) combined.push_back({c, (1 - r.t[k]) * w});
+        for (const auto& [c, w] : stencils[r.to]) combined.push_back({c, r.t[k] * w});
+        stencils[r.inner[k]] = combined;
+      }
+    for (const GridParam& g : block.inside) {
+      ParamStencil(block, g, &st);
+      stencils.push_back(st);
+    }
+    for (const GridParam& g : block.grain) {
+      ParamStencil(block, g, &st);
+      stencils.push_back(st);
+    }
+    stencils_.push_back(std::move(stencils));
+  }
+  for (size_t p = 0; p < base.pieces.size(); ++p) {
+    const Piece& piece = base.pieces[p];
+    const int k = static_cast<int>(p), n = piece.num_vertices();
     for (const StraightRun& r : piece.straight)
       if (r.fold) {
         const Eigen::Vector2d d = piece.outline.row(r.to) - piece.outline.row(r.from);
-        directions_.push_back({k, 0, r.from, r.to, d.normalized()});
+        directions_.push_back({k, r.from, r.to, d.normalized()});
       }
     for (const LevelLine& l : piece.level_lines) {
       const int a = piece.FindLandmark(l.from), b = piece.FindLandmark(l.to);
       const Eigen::Vector2d d = piece.LandmarkPosition(b) - piece.LandmarkPosition(a);
-      directions_.push_back({k, 1, a, b, d.normalized()});
+      directions_.push_back({k, LandmarkPoint(k, a), LandmarkPoint(k, b), d.normalized()});
     }
-    if (piece.has_grain)
-      directions_.push_back({k, 2, 0, 0, (piece.grain_end - piece.grain_start).normalized()});
+    if (piece.has_grain) {
+      const int start = n + static_cast<int>(piece.landmarks.size());
+      directions_.push_back(
+          {k, start, start + 1, (piece.grain_end - piece.grain_start).normalized()});
+    }
     const Eigen::VectorXd turning = TurningAngles(piece.outline);
+    base_turning_.push_back(turning);
     for (int v : piece.right_angles) {
       corners_.push_back({k, v});
       corner_turning_.push_back(turning[v]);
     }
     for (const Dart& d : piece.darts) darts_.push_back({k, d});
-  }
-  num_structure_ = static_cast<int>(directions_.size() + corners_.size() + darts_.size());
-  for (const MeasurementBinding& b : base.bindings) targets_.push_back(BindingTarget(b, body));
-  for (const Piece& piece : base.pieces) {
-    base_turning_.push_back(TurningAngles(piece.outline));
-    const Eigen::Index n = piece.outline.rows();
-    Eigen::VectorXd direction(n), length(n);
-    for (Eigen::Index v = 0; v < n; ++v) {
-      const Eigen::Vector2d e = piece.outline.row((v + 1) % n) - piece.outline.row(v);
-      direction[v] = std::atan2(e.y(), e.x());
-      length[v] = std::max(e.norm(), 1e-3);  // guards the relative change below
+    std::vector<bool> critical(n, false);
+    for (int c : piece.critical) critical[c] = true;
+    for (const StraightRun& r : KeptStraightRuns(piece))
+      for (int v = (r.from + 1) % n; v != r.to; v = (v + 1) % n)
+        if (critical[v]) collinear_.push_back({k, r.from, r.to, v});
+    std::vector<bool> on_run(n, false);  // the design's straight runs, ends included
+    for (const StraightRun& r : piece.straight)
+      for (int v = r.from;; v = (v + 1) % n) {
+        on_run[v] = true;
+        if (v == r.to) break;
+      }
+    std::vector<int> sign(n, 0);
+    std::vector<bool> flat(n, false);
+    const std::vector<bool> curves = CurveVertices(piece.outline, on_run);
+    auto curve = [&](int v) { return static_cast<bool>(curves[v]); };
+    auto sgn = [&](int v) { return turning[v] > 0 ? 1 : -1; };
+    for (int v = 0; v < n; ++v) {
+      if (!curve(v)) continue;
+      if (std::abs(turning[v]) >= kFlatRad) {
+        sign[v] = sgn(v);
+        continue;
+      }
+      const int a = (v - 1 + n) % n, b = (v + 1) % n;
+      if (curve(a) && curve(b) && std::abs(turning[a]) >= kFlatRad &&
+          std::abs(turning[b]) >= kFlatRad && sgn(a) == sgn(b)) {
+        sign[v] = sgn(a);
+        flat[v] = true;
+      }
     }
-    base_direction_.push_back(direction);
-    base_length_.push_back(length);
+    curve_sign_.push_back(sign);
+    curve_flat_.push_back(flat);
+  }
+  targets_ = BindingTargets(base, body);
+  for (const MeasurementBinding& b : base.bindings) {
+    std::vector<TermData> terms;
+    for (const BindingTerm& t : b.terms) {
+      TermData d;
+      d.piece = base.FindPiece(t.piece);
+      const Piece& piece = base.pieces[d.piece];
+      const int la = piece.FindLandmark(t.from), lb = piece.FindLandmark(t.to);
+      d.a = LandmarkPoint(d.piece, la);
+      d.b = LandmarkPoint(d.piece, lb);
+      if (t.path == BindingTerm::Path::kOutline)
+        d.path = ForwardPath(piece.landmarks[la].vertex, piece.landmarks[lb].vertex,
+                             piece.num_vertices());
+      d.multiplicity = t.multiplicity;
+      d.base_length = TermLength(piece, t);
+      terms.push_back(std::move(d));
+    }
+    terms_.push_back(std::move(terms));
   }
   for (const Seam& seam : base.seams) {
     SeamData d;
@@ -92,40 +171,48 @@ FitnessModel::FitnessModel(const Pattern& base, const BlockSet& blocks, const Me
   }
 }
 
+int FitnessModel::LandmarkPoint(int piece, int landmark) const {
+  const Piece& p = base_.pieces[piece];
+  const int v = p.landmarks[landmark].vertex;
+  return v >= 0 ? v : p.num_vertices() + landmark;
+}
+
+Eigen::Vector2d FitnessModel::Point(int piece, int point, const Eigen::VectorXd& genes,
+                                    const std::vector<Outline>& outlines) const {
+  const Block& block = blocks_.blocks[piece];
+  const int n = static_cast<int>(block.outline.size());
+  if (point < n) return outlines[piece].row(point).transpose();
+  const int l = point - n;
+  if (l < static_cast<int>(block.inside.size()))
+    return EvalParam(block, genes.data(), block.inside[l]);
+  return EvalParam(block, genes.data(), block.grain[l - block.inside.size()]);
+}
+
 void FitnessModel::Outlines(const Eigen::VectorXd& genes, std::vector<Outline>* outlines) const {
   outlines->resize(blocks_.blocks.size());
   for (size_t k = 0; k < blocks_.blocks.size(); ++k)
     EvalOutline(blocks_.blocks[k], genes.data(), &(*outlines)[k]);
 }
 
-double FitnessModel::BindingAchieved(size_t bi, const Eigen::VectorXd& genes,
-                                     const std::vector<Outline>& outlines) const {
-  double value = 0;
-  for (const BindingTerm& t : base_.bindings[bi].terms) {
-    const int p = base_.FindPiece(t.piece);
-    const Piece& piece = base_.pieces[p];
-    const Block& block = blocks_.blocks[p];
-    const int a = piece.FindLandmark(t.from), b = piece.FindLandmark(t.to);
-    auto position = [&](int l) -> Eigen::Vector2d {
-      const int v = piece.landmarks[l].vertex;
-      if (v >= 0) return outlines[p].row(v).transpose();
-      return EvalParam(block, genes.data(), block.inside[l]);
-    };
-    const double length =
-        t.path == BindingTerm::Path::kOutline
-            ? OutlineDistance(outlines[p], piece.landmarks[a].vertex, piece.landmarks[b].vertex)
-            : (position(a) - position(b)).norm();
-    value += t.multiplicity * length;
-  }
-  return value;
+double FitnessModel::TermValue(const TermData& t, const Eigen::VectorXd& genes,
+                               const std::vector<Outline>& outlines) const {
+  if (t.path.empty())
+    return (Point(t.piece, t.a, genes, outlines) - Point(t.piece, t.b, genes, outlines)).norm();
+  double length = 0;
+  for (size_t k = 0; k + 1 < t.path.size(); ++k)
+    length += (outlines[t.piece].row(t.path[k + 1]) - outlines[t.piece].row(t.path[k])).norm();
+  return length;
 }
 
 std::vector<double> FitnessModel::Achieved(const Eigen::VectorXd& genes) const {
   std::vector<Outline> outlines;
   Outlines(genes, &outlines);
   std::vector<double> values;
-  for (size_t b = 0; b < base_.bindings.size(); ++b)
-    values.push_back(BindingAchieved(b, genes, outlines));
+  for (const std::vector<TermData>& terms : terms_) {
+    double value = 0;
+    for (const TermData& t : terms) value += t.multiplicity * TermValue(t, genes, outlines);
+    values.push_back(value);
+  }
   return values;
 }
 
@@ -144,70 +231,26 @@ std::vector<double> FitnessModel::SeamMismatch(const Eigen::VectorXd& genes) con
   return values;
 }
 
-void FitnessModel::Structure(const Eigen::VectorXd& genes, const std::vector<Outline>& outlines,
-                             std::vector<double>* out) const {
-  for (const Direction& d : directions_) {
-    const Block& block = blocks_.blocks[d.piece];
-    const Piece& piece = base_.pieces[d.piece];
-    Eigen::Vector2d a, b;
-    if (d.kind == 0) {
-      a = outlines[d.piece].row(d.a);
-      b = outlines[d.piece].row(d.b);
-    } else if (d.kind == 1) {
-      auto at = [&](int l) -> Eigen::Vector2d {
-        const int v = piece.landmarks[l].vertex;
-        if (v >= 0) return outlines[d.piece].row(v).transpose();
-        return EvalParam(block, genes.data(), block.inside[l]);
-      };
-      a = at(d.a);
-      b = at(d.b);
-    } else {
-      a = EvalParam(block, genes.data(), block.grain[0]);
-      b = EvalParam(block, genes.data(), block.grain[1]);
-    }
-    const Eigen::Vector2d e = b - a;
-    out->push_back(d.unit.x() * e.y() - d.unit.y() * e.x());
-  }
-  constexpr double kAngleScaleMm = 100;
-  for (size_t c = 0; c < corners_.size(); ++c) {
-    const Outline& o = outlines[corners_[c].first];
-    const int n = static_cast<int>(o.rows()), v = corners_[c].second;
-    const Eigen::Vector2d e0 = o.row(v) - o.row((v - 1 + n) % n),
-                          e1 = o.row((v + 1) % n) - o.row(v);
-    const double turning = std::atan2(e0.x() * e1.y() - e0.y() * e1.x(), e0.dot(e1));
-    out->push_back(WrapAngle(turning - corner_turning_[c]) * kAngleScaleMm);
-  }
-  for (const auto& [p, d] : darts_) {
-    const Outline& o = outlines[p];
-    out->push_back((o.row(d.leg_a) - o.row(d.apex)).norm() -
-                   (o.row(d.leg_b) - o.row(d.apex)).norm());
-  }
-}
-
-void FitnessModel::StructureResiduals(const Eigen::VectorXd& genes,
-                                      Eigen::VectorXd* residuals) const {
+std::vector<FitnessModel::TurningBound> FitnessModel::CurveViolations(
+    const Eigen::VectorXd& genes) const {
   std::vector<Outline> outlines;
   Outlines(genes, &outlines);
-  std::vector<double> r;
-  Structure(genes, outlines, &r);
-  *residuals = Eigen::Map<Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size()));
-}
-
-void FitnessModel::Constraints(const Eigen::VectorXd& genes, Eigen::VectorXd* constraints) const {
-  thread_local std::vector<Outline> outlines;
-  Outlines(genes, &outlines);
-  std::vector<double> c;
-  for (size_t b = 0; b < targets_.size(); ++b)
-    c.push_back(BindingAchieved(b, genes, outlines) - targets_[b]);
-  std::vector<double> la, lb;
-  for (const SeamData& d : seams_) {
-    SeamEdges(outlines[d.piece_a], d.a, &la);
-    SeamEdges(outlines[d.piece_b], d.b, &lb);
-    double total = -d.ease;
-    for (size_t k = 0; k < la.size(); ++k) total += la[k] - lb[k];
-    c.push_back(total);
+  std::vector<TurningBound> out;
+  for (size_t p = 0; p < outlines.size(); ++p) {
+    if (!driven_[p]) continue;
+    const Eigen::VectorXd turning = TurningAngles(outlines[p]);
+    for (Eigen::Index v = 0; v < turning.size(); ++v) {
+      const int s = curve_sign_[p][v];
+      if (s == 0) continue;
+      const int k = static_cast<int>(p), i = static_cast<int>(v);
+      if (curve_flat_[p][v]) {
+        if (s * turning[v] < -kFlatRad) out.push_back({k, i, -s * 0.5 * kFlatRad});
+      } else if (s * turning[v] < 0) {
+        out.push_back({k, i, 0.25 * base_turning_[p][v]});
+      }
+    }
   }
-  *constraints = Eigen::Map<Eigen::VectorXd>(c.data(), static_cast<Eigen::Index>(c.size()));
+  return out;
 }
 
 Objectives FitnessModel::Evaluate(const Eigen::VectorXd& genes, bool check_simple) const {
@@ -215,8 +258,10 @@ Objectives FitnessModel::Evaluate(const Eigen::VectorXd& genes, bool check_simpl
   thread_local std::vector<double> la, lb;
   Outlines(genes, &outlines);
   Objectives o;
-  for (size_t b = 0; b < targets_.size(); ++b) {
-    const double e = std::abs(BindingAchieved(b, genes, outlines) - targets_[b]);
+  for (size_t b = 0; b < terms_.size(); ++b) {
+    double value = 0;
+    for (const TermData& t : terms_[b]) value += t.multiplicity * TermValue(t, genes, outlines);
+    const double e = std::abs(value - targets_[b]);
     o.measurement_mm += e;
     o.max_measurement_mm = std::max(o.max_measurement_mm, e);
   }
@@ -241,6 +286,7 @@ Objectives FitnessModel::Evaluate(const Eigen::VectorXd& genes, bool check_simpl
   if (!seams_.empty()) o.seam /= static_cast<double>(seams_.size());
   int vertices = 0, critical = 0;
   for (size_t p = 0; p < outlines.size(); ++p) {
+    if (!driven_[p]) continue;
     const Eigen::VectorXd turning = TurningAngles(outlines[p]);
     for (Eigen::Index v = 0; v < turning.size(); ++v)
       o.shape_deg += std::abs(WrapAngle(turning[v] - base_turning_[p][v])) * kDeg;
@@ -251,74 +297,14 @@ Objectives FitnessModel::Evaluate(const Eigen::VectorXd& genes, bool check_simpl
     if (check_simple && FindSelfIntersection(outlines[p]).first >= 0) o.simple = false;
   }
   o.shape_deg /= std::max(vertices, 1);
-  if (num_structure_ > 0) {
+  o.critical_shape_deg /= std::max(critical, 1);
+  if (!directions_.empty() || !corners_.empty() || !darts_.empty() || !collinear_.empty()) {
     thread_local std::vector<double> rules;
     rules.clear();
     Structure(genes, outlines, &rules);
     for (double r : rules) o.max_structure_mm = std::max(o.max_structure_mm, std::abs(r));
   }
-  o.critical_shape_deg /= std::max(critical, 1);
   return o;
-}
-
-void FitnessModel::Residuals(const Eigen::VectorXd& genes, double angle_scale_mm,
-                             double length_scale_mm, Eigen::VectorXd* constraints,
-                             Eigen::VectorXd* soft, int only_piece,
-                             const Eigen::VectorXd* reuse_soft) const {
-  thread_local std::vector<Outline> outlines;
-  Outlines(genes, &outlines);
-  const bool reuse = only_piece >= 0 && reuse_soft != nullptr;
-  auto stale = [&](int p) { return reuse && p != only_piece; };
-  thread_local std::vector<double> c, s, la, lb;
-  c.clear();
-  s.clear();
-  for (size_t b = 0; b < targets_.size(); ++b)
-    c.push_back(BindingAchieved(b, genes, outlines) - targets_[b]);
-  for (const SeamData& d : seams_) {
-    SeamEdges(outlines[d.piece_a], d.a, &la);
-    SeamEdges(outlines[d.piece_b], d.b, &lb);
-    double total = -d.ease;
-    for (size_t k = 0; k < la.size(); ++k) {
-      total += la[k] - lb[k];
-      s.push_back(la[k] - lb[k] - d.edge_target[k]);
-    }
-    c.push_back(total);
-    const bool copy = stale(d.piece_a) && stale(d.piece_b);
-    for (size_t k = 1; k + 1 < d.a.size(); ++k) {
-      if (copy) {
-        s.push_back((*reuse_soft)[static_cast<Eigen::Index>(s.size())]);
-        continue;
-      }
-      const double diff =
-          Turning(outlines[d.piece_a], d.a, k) - Turning(outlines[d.piece_b], d.b, k);
-      s.push_back(WrapAngle(diff - d.angle_base[k - 1]) * angle_scale_mm);
-    }
-  }
-  for (size_t p = 0; p < outlines.size(); ++p) {
-    if (stale(static_cast<int>(p))) {  // unchanged piece: copy its block
-      const Eigen::Index n = outlines[p].rows() * (length_scale_mm > 0 ? 2 : 1);
-      const Eigen::Index at = static_cast<Eigen::Index>(s.size());
-      for (Eigen::Index v = 0; v < n; ++v) s.push_back((*reuse_soft)[at + v]);
-      continue;
-    }
-    // Edge directions, not just turning angles: a straight fold or hem line
-    // must not tilt as a whole either (a pure turning-angle penalty lets a
-    // CB fold line rotate, which no cutter would accept).
-    const Outline& o = outlines[p];
-    const Eigen::Index n = o.rows();
-    for (Eigen::Index v = 0; v < n; ++v) {
-      const Eigen::Vector2d e = o.row((v + 1) % n) - o.row(v);
-      s.push_back(WrapAngle(std::atan2(e.y(), e.x()) - base_direction_[p][v]) * angle_scale_mm);
-    }
-    if (length_scale_mm > 0)
-      for (Eigen::Index v = 0; v < n; ++v) {
-        const double l = (o.row((v + 1) % n) - o.row(v)).norm();
-        s.push_back(length_scale_mm * (l / base_length_[p][v] - 1.0));
-      }
-  }
-  Structure(genes, outlines, &c);
-  *constraints = Eigen::Map<Eigen::VectorXd>(c.data(), static_cast<Eigen::Index>(c.size()));
-  *soft = Eigen::Map<Eigen::VectorXd>(s.data(), static_cast<Eigen::Index>(s.size()));
 }
 
 }  // namespace bespoke

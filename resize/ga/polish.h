@@ -1,50 +1,41 @@
 // Final polish of the GA's pick (a deviation from the thesis, which stops at
-// the GA and reports measurement errors of 1.8-2.9): constrained Gauss-Newton
-// (sequential quadratic programming) on the control points.
+// the GA and reports measurement errors of 1.8-2.9): the pick is projected
+// onto the constraints, i.e. the nearest pattern that meets every binding,
+// every seam's total length and every structure rule exactly, near in the
+// grid energy of the change from the pick (grid_energy.h), so a correction
+// spreads smoothly over the grid instead of pulling single points:
 //
-//   minimise   |soft(x)|^2 + mu |x - x_pick|^2
-//   subject to constraints(x) = 0
-// where constraints are every binding's error and every seam's total length
-// mismatch (mm) and soft residuals are the shape, paired-seam and relative
-// edge-length terms of FitnessModel::Residuals. Each step solves the KKT system of the linearised
-// problem (Jacobians by forward differences); steps are halved until the
-// merit |soft|^2 + rho |constraints|^2 falls and the grid stays ordered and
-// no outline self-intersects. Stops when the largest constraint is below
-// `tolerance_mm` and the step is tiny, or after `max_iterations`.
+//   minimise   |S (genes - genes_pick)|^2
+//   subject to FitnessModel::Constraints(genes) = 0
+//
+// solved by constrained Gauss-Newton on the pieces a binding or seam reaches
+// (solve.h).
 #ifndef BESPOKE_RESIZE_GA_POLISH_H_
 #define BESPOKE_RESIZE_GA_POLISH_H_
 
 #include <Eigen/Core>
 
+#include "resize/ga/grid_energy.h"
 #include "resize/ga/objectives.h"
 
 namespace bespoke {
 
 struct PolishOptions {
-  int max_iterations = 60;       // default 60
-  double tolerance_mm = 0.01;    // constraint tolerance (mm). Default 0.01 mm.
-  double angle_scale_mm = 100;   // mm per radian of turning-angle change. Default 100.
-  double regularisation = 1e-4;  // mu, keeps unused control points put. Default 1e-4.
-  // mm per unit of relative edge-length change (length / base length - 1):
-  // keeps the design's dimensions that no binding or seam asks to change (a
-  // drafting system's fixed hem widths, band depths, overlaps, ...) and lets
-  // long edges rather than short ones absorb a change. 0 = off. Default 30.
-  double length_scale_mm = 30;
-  double min_gap_mm = 0.1;  // grid ordering gap. Default 0.1 mm.
-  void Check() const;       // InputError for non-positive values (length_scale_mm may be 0)
+  GridEnergyOptions energy;    // the metric of the correction (grid_energy.h)
+  int max_iterations = 30;     // Gauss-Newton steps. Default 30.
+  double tolerance_mm = 0.01;  // constraint tolerance (mm). Default 0.01 mm.
+  double min_gap_mm = 0.1;     // grid ordering gap (mm). Default 0.1 mm.
+  void Check() const;          // InputError for values out of range
 };
 
 struct PolishReport {
   int iterations = 0;
   double max_constraint_before_mm = 0;
   double max_constraint_after_mm = 0;
-  // |soft residuals|^2 of FitnessModel::Residuals at the end (mm^2; without
-  // the ordering barrier and the pull to the start): what the polish
-  // minimises, comparable between starts.
-  double soft_after = 0;
+  double change = 0;  // |S (genes - genes_pick)|^2 at the end (grid energy of the correction)
 };
 
-// Polishes `genes` in place.
+// Polishes `genes` (#genes, mm) in place.
 PolishReport Polish(const PolishOptions& options, const FitnessModel& model,
                     Eigen::VectorXd* genes);
 

@@ -54,13 +54,14 @@ double DirectionDeg(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return std::abs(Wrap(std::atan2(b.y(), b.x()) - std::atan2(a.y(), a.x()))) * 180 / M_PI;
 }
 
-// Sign changes of the turning angle along runs of vertices that turn by more
-// than `min_rad` (vertices on straight runs and sharp corners excluded).
-int Inflections(const Eigen::VectorXd& turning, const std::vector<bool>& skip) {
+// Sign changes of the turning angle along the curves (CurveVertices of the
+// base), among vertices that turn by 1e-3 rad or more; any other vertex ends
+// a curve.
+int Inflections(const Eigen::VectorXd& turning, const std::vector<bool>& curve) {
   int count = 0, last = 0;
-  constexpr double kMinRad = 1e-3, kCornerRad = 0.35;
+  constexpr double kMinRad = 1e-3;
   for (Eigen::Index v = 0; v < turning.size(); ++v) {
-    if (skip[v] || std::abs(turning[v]) > kCornerRad) {
+    if (!curve[v]) {
       last = 0;
       continue;
     }
@@ -114,7 +115,8 @@ std::vector<StructureFigures> StructureChanges(const Pattern& base, const Patter
           std::max(f.max_dart_mismatch_mm,
                    std::abs((b.outline.row(d.leg_a) - b.outline.row(d.apex)).norm() -
                             (b.outline.row(d.leg_b) - b.outline.row(d.apex)).norm()));
-    f.new_inflections = std::max(0, Inflections(tb, on_run) - Inflections(ta, on_run));
+    const std::vector<bool> curve = CurveVertices(a.outline, on_run);
+    f.new_inflections = std::max(0, Inflections(tb, curve) - Inflections(ta, curve));
     all.push_back(f);
   }
   return all;
@@ -135,17 +137,21 @@ json ResizeReportJson(const Pattern& base, const MeasurementSet& body, const Res
   json measurements = json::array();
   for (size_t b = 0; b < base.bindings.size(); ++b) {
     const MeasurementBinding& binding = base.bindings[b];
-    const double body_mm = binding.fixed ? 0.0 : body.at(binding.measurement);
-    measurements.push_back({{"binding", binding.id},
-                            {"measurement", binding.fixed ? "(fixed)" : binding.measurement},
-                            {"body_mm", body_mm},
-                            {"ease_mm", r.targets_mm[b] - body_mm},
-                            {"ease_percent", binding.ease_percent},
-                            {"target_mm", r.targets_mm[b]},
-                            {"achieved_mm", r.achieved_mm[b]},
-                            {"error_mm", r.achieved_mm[b] - r.targets_mm[b]},
-                            {"base_pattern_mm", BindingValue(base, binding)},
-                            {"proportional_grading_mm", BindingValue(r.seed, binding)}});
+    const bool measured = !binding.fixed && binding.follows.empty();
+    const double body_mm = measured ? body.at(binding.measurement) : 0.0;
+    measurements.push_back(
+        {{"binding", binding.id},
+         {"measurement", binding.fixed              ? "(fixed)"
+                         : !binding.follows.empty() ? "(follows " + binding.follows + ")"
+                                                    : binding.measurement},
+         {"body_mm", body_mm},
+         {"ease_mm", r.targets_mm[b] - body_mm},
+         {"ease_percent", binding.ease_percent},
+         {"target_mm", r.targets_mm[b]},
+         {"achieved_mm", r.achieved_mm[b]},
+         {"error_mm", r.achieved_mm[b] - r.targets_mm[b]},
+         {"base_pattern_mm", BindingValue(base, binding)},
+         {"proportional_grading_mm", BindingValue(r.seed, binding)}});
   }
   json seams = json::array();
   for (size_t s = 0; s < base.seams.size(); ++s) {
@@ -187,7 +193,7 @@ json ResizeReportJson(const Pattern& base, const MeasurementSet& body, const Res
             {"iterations", r.polish.iterations},
             {"max_constraint_before_mm", r.polish.max_constraint_before_mm},
             {"max_constraint_after_mm", r.polish.max_constraint_after_mm},
-            {"objective_mm2", r.polish.soft_after}}},
+            {"change", r.polish.change}}},
           {"pareto_front_size", r.front.size()},
           {"time_s", {{"ga", r.ga_time_s}, {"polish", r.polish_time_s}}},
           {"measurements", measurements},

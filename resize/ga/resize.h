@@ -1,17 +1,19 @@
 // Made-to-measure pattern resizing with the multi-objective genetic algorithm
 // of thesis chapter 4 (NSGA-II selection with pagmo's non-dominated sorting
-// and crowding distance), followed by a constrained polish (polish.h).
+// and crowding distance), started from a graded pattern and followed by a
+// constrained polish.
 //
 // Input: a base pattern (validated, with bindings) and the body's
-// measurements (mm, core names; every bound measurement must be present after
-// the derived ones are added, AddDerivedMeasurements; bindings that keep the
-// base's ease need Pattern::base_body). The polish starts from the GA's pick
-// and from the graded start and keeps the result with the least polish
-// objective (polish_start says which).
-// The GA starts from the graded pattern (grader.h) and its shape objectives,
-// like the polish's soft terms, measure change from that graded shape; the
-// polish keeps the design's structure rules (FitnessModel::StructureResiduals,
-// relative to the base) as hard constraints beside the bindings and seams.
+// measurements (mm, catalogue names; every bound measurement must be
+// present after the derived ones are added, AddDerivedMeasurements;
+// bindings that keep the base's ease need Pattern::base_body).
+// Only the pieces a binding or seam reaches are fitted; every other piece is
+// copied from the base unchanged. Steps: the graded start (grader.h); the GA,
+// its population the graded start plus noise, its shape objective the
+// turning-angle change from the base (objectives.h); the polish, projecting
+// the GA's pick onto the bindings, seams and structure rules (polish.h),
+// falling back to the graded start when the projection fails. With 0
+// generations the GA is skipped and the graded start is polished.
 // Output: the fitted pattern, its objective values before and after the
 // polish, the final Pareto front, per-generation statistics, the graded
 // start, and the proportional-grading seed for comparison.
@@ -51,9 +53,8 @@ struct ResizeOptions {
   double tolerance_mm = 1;             // measurement tolerance of the final pick. Default 1 mm.
   double min_gap_mm = 0.1;             // grid ordering gap. Default 0.1 mm.
   bool polish = true;                  // run the constrained polish. Default on.
-  // Start the GA from the graded pattern (grader.h) and keep its shape; off:
-  // from the proportional seed (Algorithm 6), keeping the base's shape.
-  // Default on.
+  // Start the GA from the graded pattern (grader.h); off: from the
+  // proportional seed (Algorithm 6), as the thesis does. Default on.
   bool graded_start = true;
   GraderOptions grader_options;
   PolishOptions polish_options;
@@ -79,8 +80,10 @@ struct ResizeResult {
   std::vector<GenerationStats> history;
   Pattern seed;  // proportional scaling (Algorithm 6)
   Objectives seed_objectives;
-  Pattern graded;                               // the graded start (grader.h), or the seed when off
-  double graded_constraint_mm = 0;              // largest binding / seam error the grader left (mm)
+  Pattern graded;                          // the graded start (grader.h), or the seed when off
+  Objectives graded_objectives;            // of the graded start
+  double graded_constraint_mm = 0;         // largest binding, seam or structure error it left (mm)
+  std::vector<std::string> fitted_pieces;  // the pieces fitted (a binding or seam reaches them)
   std::vector<double> targets_mm, achieved_mm;  // per binding
   std::vector<double> seam_mismatch_mm;         // per seam: length(a) - length(b) - ease
   double ga_time_s = 0, polish_time_s = 0;

@@ -71,11 +71,10 @@ TEST(Resize, TrousersFollowALongerRise) {
       EXPECT_NEAR(BindingValue(patterns.fitted, b), 300 + b.ease_mm, 1.0) << b.id;
 }
 
-TEST(Resize, PolishKeepsUnboundStyleDimensions) {
+TEST(Resize, FixedStyleDimensionsAreKept) {
   // The trousers' hem widths are fixed style widths of the draft (210 and
-  // 250 mm for any body) that no binding names; grading scales them, the
-  // polish's relative edge-length term keeps them nearer the base's (26-28
-  // mm off against grading's 88-105 mm when written).
+  // 250 mm for any body), bound as fixed; grading scales them, the fit keeps
+  // them.
   const MeasurementSet body = VariedMeasurements("trousers", 100);
   FitPatterns patterns;
   EvaluateFit(Small(), "trousers", body, &patterns);
@@ -88,18 +87,22 @@ TEST(Resize, PolishKeepsUnboundStyleDimensions) {
   for (const char* piece : {"front", "back"}) {
     const double drafted = hem(patterns.direct, piece);
     EXPECT_GT(std::abs(hem(patterns.grading, piece) - drafted), 20.0) << piece;
-    EXPECT_LT(std::abs(hem(patterns.fitted, piece) - drafted),
-              0.5 * std::abs(hem(patterns.grading, piece) - drafted))
-        << piece;
+    EXPECT_NEAR(hem(patterns.fitted, piece), drafted, 1.0) << piece;
   }
 }
 
-TEST(Resize, PolishOptionsRejectANegativeLengthScale) {
+TEST(Resize, PolishAndGraderOptionsRejectBadValues) {
   PolishOptions o;
-  o.length_scale_mm = -1;
+  o.energy.shear_weight = -1;
   EXPECT_THROW(o.Check(), InputError);
-  o.length_scale_mm = 0;  // off
-  EXPECT_NO_THROW(o.Check());
+  GraderOptions g;
+  g.energy.prior_weight = 0;
+  EXPECT_THROW(g.Check(), InputError);
+  g = GraderOptions();
+  g.share_weight = -1;
+  EXPECT_THROW(g.Check(), InputError);
+  EXPECT_NO_THROW(GraderOptions().Check());
+  EXPECT_NO_THROW(PolishOptions().Check());
 }
 
 TEST(Resize, DeterministicForASeed) {

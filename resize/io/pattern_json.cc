@@ -196,7 +196,12 @@ void ParseSeamsAndBindings(const json& j, const std::string& what, bool keep_by_
     binding.id = Require<std::string>(b, "id", what + ": binding");
     const std::string where = what + ": binding '" + binding.id + "'";
     binding.fixed = Get<bool>(b, "fixed", false, where);
-    binding.measurement = binding.fixed ? "" : Require<std::string>(b, "measurement", where);
+    binding.follows = Get<std::string>(b, "follows", "", where);
+    if (binding.fixed && !binding.follows.empty())
+      throw InputError(where + ": a binding is \"fixed\" or \"follows\" another, not both");
+    binding.measurement = binding.fixed || !binding.follows.empty()
+                              ? ""
+                              : Require<std::string>(b, "measurement", where);
     binding.ease_mm = Get<double>(b, "ease_mm", 0.0, where);
     binding.ease_percent = Get<double>(b, "ease_percent", 0.0, where);
     const std::string ease = Get<std::string>(b, "ease", "", where);
@@ -205,8 +210,9 @@ void ParseSeamsAndBindings(const json& j, const std::string& what, bool keep_by_
     if (!ease.empty() && (b.contains("ease_mm") || b.contains("ease_percent")))
       throw InputError(where + ": give \"ease\" or an ease value, not both");
     if (ease == "keep_percent") binding.keep_ease = "percent";
-    if (!binding.fixed && (ease == "keep" || (ease.empty() && !b.contains("ease_mm") &&
-                                              !b.contains("ease_percent") && keep_by_default)))
+    if (!binding.fixed && binding.follows.empty() &&
+        (ease == "keep" || (ease.empty() && !b.contains("ease_mm") && !b.contains("ease_percent") &&
+                            keep_by_default)))
       binding.keep_ease = "mm";
     for (const json& t : Require<json>(b, "terms", where)) {
       BindingTerm term;
@@ -319,6 +325,8 @@ json PatternToJson(const Pattern& pattern) {
     if (b.fixed) {
       bj["fixed"] = true;
       bj["value_mm"] = b.fixed_mm;
+    } else if (!b.follows.empty()) {
+      bj["follows"] = b.follows;
     } else {
       bj["measurement"] = b.measurement;
       bj["ease_mm"] = b.ease_mm;
@@ -388,6 +396,7 @@ void ApplySidecar(const json& sidecar, const std::string& what, Pattern* pattern
   ParseBaseMeasurements(sidecar, std::filesystem::path(what).parent_path(), what, pattern);
   ParseSeamsAndBindings(sidecar, what, !pattern->base_body.empty(), pattern);
   ValidatePattern(*pattern, what, false);
+  LandmarksOntoOutline(pattern);
   EqualizeSeamCounts(pattern);
   if (sidecar.value("infer_structure", true)) InferStructure(StructureOptions{}, pattern);
   AddStructureCriticalPoints(pattern);

@@ -130,6 +130,46 @@ void ReplaceOutline(Pattern* pattern, int p, const Outline& outline,
   piece.outline = outline;
 }
 
+void LandmarksOntoOutline(Pattern* pattern, double tolerance_mm) {
+  for (size_t p = 0; p < pattern->pieces.size(); ++p) {
+    for (size_t l = 0; l < pattern->pieces[p].landmarks.size(); ++l) {
+      Piece& piece = pattern->pieces[p];
+      PieceLandmark& mark = piece.landmarks[l];
+      if (mark.vertex >= 0) continue;
+      const Outline& o = piece.outline;
+      const int n = piece.num_vertices();
+      int edge = -1;
+      double best = tolerance_mm, best_t = 0;
+      for (int v = 0; v < n; ++v) {
+        const Eigen::Vector2d a = o.row(v), d = Eigen::Vector2d(o.row((v + 1) % n)) - a;
+        const double t =
+            std::clamp((mark.position - a).dot(d) / std::max(d.squaredNorm(), 1e-12), 0.0, 1.0);
+        const double dist = (a + t * d - mark.position).norm();
+        if (dist <= best) best = dist, edge = v, best_t = t;
+      }
+      if (edge < 0) continue;
+      const double length = (o.row((edge + 1) % n) - o.row(edge)).norm();
+      if (best_t * length < 0.01 || (1 - best_t) * length < 0.01) {
+        mark.vertex = best_t * length < 0.01 ? edge : (edge + 1) % n;
+        continue;
+      }
+      Outline out(n + 1, 2);
+      std::vector<int> old_to_new(n);
+      for (int v = 0, k = 0; v < n; ++v) {
+        old_to_new[v] = k;
+        out.row(k++) = o.row(v);
+        if (v == edge) out.row(k++) = (o.row(v) + best_t * (o.row((v + 1) % n) - o.row(v)));
+      }
+      const std::string name = mark.name;
+      ReplaceOutline(pattern, static_cast<int>(p), out, old_to_new);
+      Piece& changed = pattern->pieces[p];
+      changed.landmarks[l].vertex = old_to_new[edge] + 1;
+      pattern->notes.push_back("piece '" + changed.name + "': landmark '" + name +
+                               "' lies on the outline; a vertex was added there");
+    }
+  }
+}
+
 void MakeCounterClockwise(Pattern* pattern) {
   for (size_t p = 0; p < pattern->pieces.size(); ++p) {
     const Outline& o = pattern->pieces[p].outline;
@@ -144,7 +184,11 @@ void MakeCounterClockwise(Pattern* pattern) {
   }
 }
 
-void EqualizeSeamCounts(Pattern* pattern, double merge_mm) {
+namespace {
+
+// One pass of EqualizeSeamCounts over every seam; true when a point was added.
+bool EqualizePass(Pattern* pattern, double merge_mm) {
+  bool changed = false;
   for (Seam& seam : pattern->seams) {
     const int pa = pattern->FindPiece(seam.a.piece), pb = pattern->FindPiece(seam.b.piece);
     if (pa < 0 || pb < 0) continue;
@@ -180,14 +224,38 @@ void EqualizeSeamCounts(Pattern* pattern, double merge_mm) {
       if (!has[1]) add_b.push_back(f_other[1]);
       k = j;
     }
-    const size_t before_a = ia.size(), before_b = ib.size();
     InsertAtFractions(pattern, seam.a, add_a);
     InsertAtFractions(pattern, seam.b, add_b);
-    pattern->notes.push_back("seam '" + seam.name + "': sides resampled from " +
-                             std::to_string(before_a) + " and " + std::to_string(before_b) +
-                             " to " + std::to_string(before_a + add_a.size()) +
-                             " points each (points added at the other side's arc-length "
-                             "fractions; outlines unchanged)");
+    changed = changed || !add_a.empty() || !add_b.empty();
+  }
+  return changed;
+}
+
+std::pair<size_t, size_t> SideCounts(const Pattern& pattern, const Seam& seam) {
+  const int pa = pattern.FindPiece(seam.a.piece), pb = pattern.FindPiece(seam.b.piece);
+  if (pa < 0 || pb < 0) return {0, 0};
+  return {SeamIndices(seam.a, pattern.pieces[pa].num_vertices()).size(),
+          SeamIndices(seam.b, pattern.pieces[pb].num_vertices()).size()};
+}
+
+}  // namespace
+
+void EqualizeSeamCounts(Pattern* pattern, double merge_mm) {
+  std::vector<std::pair<size_t, size_t>> before;
+  for (const Seam& seam : pattern->seams) before.push_back(SideCounts(*pattern, seam));
+  // Seams that share a run (two sleeves set into one armhole) need passes
+  // until every pair agrees.
+  for (int pass = 0; pass < 8 && EqualizePass(pattern, merge_mm); ++pass) {
+  }
+  for (size_t s = 0; s < pattern->seams.size(); ++s) {
+    const auto after = SideCounts(*pattern, pattern->seams[s]);
+    if (after == before[s]) continue;
+    pattern->notes.push_back("seam '" + pattern->seams[s].name + "': sides resampled from " +
+                             std::to_string(before[s].first) + " and " +
+                             std::to_string(before[s].second) + " to " +
+                             std::to_string(after.first) + " and " + std::to_string(after.second) +
+                             " points (points added at the other side's arc-length fractions; "
+                             "outlines unchanged)");
   }
 }
 

@@ -23,6 +23,13 @@ namespace bespoke {
 void ReplaceOutline(Pattern* pattern, int p, const Outline& outline,
                     const std::vector<int>& old_to_new, bool reversed = false);
 
+// Makes every inside landmark (given by position) that lies within
+// `tolerance_mm` of its piece's outline an outline landmark: it takes the
+// vertex there, or a vertex is added on the edge (which does not change the
+// outline's shape), so the landmark moves with the outline (a centre-back
+// chest point stays on the fold line). Notes say which.
+void LandmarksOntoOutline(Pattern* pattern, double tolerance_mm = 0.5);
+
 // Turns every clockwise outline counter-clockwise (notes say which).
 void MakeCounterClockwise(Pattern* pattern);
 

@@ -103,6 +103,20 @@ Eigen::VectorXd TurningAngles(const Outline& outline) {
   return angles;
 }
 
+std::vector<bool> CurveVertices(const Outline& o, const std::vector<bool>& skip, double corner_rad,
+                                double straight_mm) {
+  const Eigen::VectorXd turning = TurningAngles(o);
+  const int n = static_cast<int>(o.rows());
+  std::vector<bool> curve(n, false);
+  for (int v = 0; v < n; ++v) {
+    const double before = (o.row(v) - o.row((v - 1 + n) % n)).norm();
+    const double after = (o.row((v + 1) % n) - o.row(v)).norm();
+    curve[v] =
+        !skip[v] && std::abs(turning[v]) < corner_rad && std::min(before, after) < straight_mm;
+  }
+  return curve;
+}
+
 Outline OffsetOutline(const Outline& outline, double distance_mm) {
   const int n = static_cast<int>(outline.rows());
   const double sign = SignedArea(outline) >= 0 ? 1.0 : -1.0;  // outward = right of CCW travel

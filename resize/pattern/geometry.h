@@ -36,6 +36,14 @@ bool SegmentsIntersect(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1,
 // left). The inner angle of a counter-clockwise outline is pi - turning.
 Eigen::VectorXd TurningAngles(const Outline& outline);
 
+// Which vertices of `outline` lie on a curve, where inflections count: not
+// marked in `skip` (e.g. on a straight run), turning by less than
+// `corner_rad` (0.35 rad: a sharper turn is a corner) and with at least one
+// incident edge shorter than `straight_mm` (20 mm: a vertex between two long
+// edges is the corner of two straight lines, however slight).
+std::vector<bool> CurveVertices(const Outline& outline, const std::vector<bool>& skip,
+                                double corner_rad = 0.35, double straight_mm = 20);
+
 // The outline offset outward by `distance_mm` (mitred corners, mitre length
 // limited to 3 x distance). Used for cut lines with seam allowance.
 Outline OffsetOutline(const Outline& outline, double distance_mm);

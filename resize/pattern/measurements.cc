@@ -35,13 +35,35 @@ bool IsBindableMeasurement(const std::string& name) {
 }
 
 double BindingTarget(const MeasurementBinding& binding, const MeasurementSet& body) {
+  if (!binding.follows.empty())
+    throw InputError("binding '" + binding.id + "' follows another; its target needs the pattern");
   if (binding.fixed) return binding.fixed_mm;
   return body.at(binding.measurement) * (1 + binding.ease_percent / 100) + binding.ease_mm;
 }
 
+std::vector<double> BindingTargets(const Pattern& pattern, const MeasurementSet& body) {
+  std::vector<double> targets;
+  for (const MeasurementBinding& b : pattern.bindings) {
+    if (b.follows.empty()) {
+      targets.push_back(BindingTarget(b, body));
+      continue;
+    }
+    const MeasurementBinding* leader = nullptr;
+    for (const MeasurementBinding& other : pattern.bindings)
+      if (other.id == b.follows) leader = &other;
+    if (leader == nullptr || !leader->follows.empty())
+      throw InputError("binding '" + b.id + "' follows '" + b.follows +
+                       "', which is not a binding with a measurement or a fixed one");
+    const double ratio =
+        BindingTarget(*leader, body) / std::max(BindingValue(pattern, *leader), 1e-9);
+    targets.push_back(BindingValue(pattern, b) * ratio);
+  }
+  return targets;
+}
+
 void ResolveKeptEase(const std::string& what, Pattern* pattern) {
   for (MeasurementBinding& b : pattern->bindings) {
-    if (b.keep_ease.empty() || b.fixed) continue;
+    if (b.keep_ease.empty() || b.fixed || !b.follows.empty()) continue;
     const auto body = pattern->base_body.find(b.measurement);
     if (body == pattern->base_body.end())
       throw InputError(what + ": binding '" + b.id + "' keeps the base pattern's ease, but '" +
@@ -120,7 +142,7 @@ nlohmann::json MeasurementsToJson(const MeasurementSet& values) {
 void CheckBindingsAgainst(const Pattern& pattern, const MeasurementSet& values,
                           const std::string& what, const std::string& where) {
   for (const MeasurementBinding& b : pattern.bindings) {
-    if (b.fixed) continue;
+    if (b.fixed || !b.follows.empty()) continue;
     if (!IsBindableMeasurement(b.measurement))
       throw InputError(what + ": binding '" + b.id + "' uses unknown measurement '" +
                        b.measurement +

@@ -28,8 +28,14 @@ bool IsBindableMeasurement(const std::string& name);
 
 // The target of `binding` for `body` (mm): body x (1 + ease_percent / 100) +
 // ease_mm, or the kept value of a fixed binding. The measurement must be in
-// `body` (CheckBindingsAgainst).
+// `body` (CheckBindingsAgainst). InputError for a binding that follows
+// another (use BindingTargets).
 double BindingTarget(const MeasurementBinding& binding, const MeasurementSet& body);
+
+// Every binding's target, in order, those that follow another binding
+// included (its base value in `pattern` x the followed binding's target /
+// its base value).
+std::vector<double> BindingTargets(const Pattern& pattern, const MeasurementSet& body);
 
 // Resolves every binding that keeps the base pattern's own ease
 // (MeasurementBinding::keep_ease) from `pattern.base_body`, the measurements

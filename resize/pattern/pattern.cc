@@ -120,7 +120,16 @@ void CheckSeam(const Pattern& pattern, const Seam& seam, const std::string& what
 
 void CheckBinding(const Pattern& pattern, const MeasurementBinding& b, const std::string& what) {
   const std::string where = what + ": binding '" + b.id + "'";
-  if (b.measurement.empty() && !b.fixed) throw InputError(where + " has no measurement name");
+  if (b.measurement.empty() && !b.fixed && b.follows.empty())
+    throw InputError(where + " has no measurement name");
+  if (!b.follows.empty()) {
+    const MeasurementBinding* leader = nullptr;
+    for (const MeasurementBinding& other : pattern.bindings)
+      if (other.id == b.follows) leader = &other;
+    if (leader == nullptr || leader == &b || !leader->follows.empty())
+      throw InputError(where + " follows '" + b.follows +
+                       "', which is not another binding with a measurement or a fixed one");
+  }
   if (!b.keep_ease.empty() && b.keep_ease != "mm" && b.keep_ease != "percent")
     throw InputError(where + ": kept ease is \"mm\" or \"percent\"");
   if (!std::isfinite(b.ease_mm) || !std::isfinite(b.ease_percent) || b.ease_percent <= -100)

@@ -120,6 +120,12 @@ struct MeasurementBinding {
   // target = the base pattern's own value; `measurement` is empty.
   bool fixed = false;
   double fixed_mm = 0;  // the kept value when `fixed` (mm)
+  // The id of another binding (one with a measurement, or fixed) this one
+  // grades with: target = its base value x that binding's target / that
+  // binding's base value (a dimension no measurement gives, such as an
+  // armhole depth, graded in proportion to the chest); `measurement` is
+  // empty. "" when not used.
+  std::string follows;
 };
 
 struct Pattern {
