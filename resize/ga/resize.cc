@@ -5,12 +5,12 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
-#include <pagmo/utils/multi_objective.hpp>
 
 #include "resize/ga/grader.h"
 #include "resize/ga/grading.h"
 #include "resize/ga/operators.h"
 #include "resize/ga/polish.h"
+#include "resize/ga/ranking.h"
 #include "resize/pattern/geometry.h"
 #include "scanners/core/errors.h"
 
@@ -25,7 +25,7 @@ struct Individual {
 
 using Population = std::vector<Individual>;
 
-pagmo::vector_double Point(const Objectives& o) { return {o.measurement_mm, o.seam, o.shape_deg}; }
+ObjectivePoint Point(const Objectives& o) { return {o.measurement_mm, o.seam, o.shape_deg}; }
 
 void EvaluateRange(const FitnessModel& model, Population* pop, size_t begin, size_t end) {
   tbb::parallel_for(begin, end,
@@ -39,21 +39,17 @@ struct Ranking {
 };
 
 Ranking Rank(const Population& pop) {
-  std::vector<pagmo::vector_double> points;
+  std::vector<ObjectivePoint> points;
   for (const Individual& ind : pop) points.push_back(Point(ind.objectives));
-  const auto fronts = std::get<0>(pagmo::fast_non_dominated_sorting(points));
+  const Fronts fronts = SortFronts(points);
   Ranking r;
-  r.rank.assign(pop.size(), 0);
+  r.rank = fronts.rank;
   r.crowding.assign(pop.size(), std::numeric_limits<double>::infinity());
-  for (size_t f = 0; f < fronts.size(); ++f) {
-    std::vector<pagmo::vector_double> front_points;
-    for (auto i : fronts[f]) {
-      r.rank[i] = static_cast<int>(f);
-      front_points.push_back(points[i]);
-    }
-    if (front_points.size() < 3) continue;  // pagmo needs 2+; ends are infinite anyway
-    const pagmo::vector_double cd = pagmo::crowding_distance(front_points);
-    for (size_t k = 0; k < fronts[f].size(); ++k) r.crowding[fronts[f][k]] = cd[k];
+  for (const std::vector<int>& front : fronts.fronts) {
+    std::vector<ObjectivePoint> front_points;
+    for (int i : front) front_points.push_back(points[i]);
+    const std::vector<double> cd = CrowdingDistance(front_points);
+    for (size_t k = 0; k < front.size(); ++k) r.crowding[front[k]] = cd[k];
   }
   return r;
 }
@@ -235,9 +231,9 @@ Evolution Evolve(const ResizeOptions& options, const FitnessModel& model,
       if (u(rng) < mutation_rate) NonUniformMutation(blocks, mutation, rng, &b.genes);
     }
     EvaluateRange(model, &next, n, 2 * n);
-    std::vector<pagmo::vector_double> points;
+    std::vector<ObjectivePoint> points;
     for (const Individual& ind : next) points.push_back(Point(ind.objectives));
-    const std::vector<pagmo::pop_size_t> keep = pagmo::select_best_N_mo(points, n);
+    const std::vector<int> keep = SelectBest(points, static_cast<int>(n));
     for (size_t i = 0; i < n; ++i) pop[i] = std::move(next[keep[i]]);
     Age(options, blocks, model, mutation, rng, &pop);
     GenerationStats stats;
