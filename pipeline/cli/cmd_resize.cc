@@ -5,7 +5,8 @@
 // of thesis chapter 4 (resize/ga/resize.h) and writes into OUT_DIR:
 //   fitted.json (Bespoke pattern), fitted.svg (1:1 mm, printable),
 //   fitted.dxf (DXF-ASTM D6673 layers), pareto_front.csv, report.json (with
-//   the settings used), report.txt (readable summary) and convergence.png.
+//   the settings used), report.txt (readable summary), convergence.png and
+//   overlay.png (base, graded start and fit over each other, per piece).
 // PATTERN is a Bespoke pattern JSON, a GarmentCode JSON or a DXF-AAMA/ASTM
 // file (the last two need --sidecar for landmarks, seams and bindings).
 // Bad input (unknown or missing measurement names, missing bindings, seams of
@@ -26,6 +27,7 @@
 #include "resize/io/pattern_dxf.h"
 #include "resize/io/pattern_io.h"
 #include "resize/io/pattern_json.h"
+#include "resize/io/pattern_overlay.h"
 #include "resize/io/pattern_svg.h"
 #include "scanners/core/atomic_file.h"
 #include "scanners/core/errors.h"
@@ -56,6 +58,25 @@ struct ResizeCommandOptions {
     resize.Check();
   }
 };
+
+// Base, graded start and fit drawn over each other, piece by piece.
+void WriteOverlay(const Pattern& base, const ResizeResult& r, const std::filesystem::path& file) {
+  auto layer = [](const char* label, const Pattern* p, std::array<double, 3> color, double px,
+                  bool dashed) {
+    OverlayLayer l;
+    l.label = label;
+    l.pattern = p;
+    l.color = color;
+    l.line_px = px;
+    l.dashed = dashed;
+    return l;
+  };
+  WritePatternOverlay(OverlayOptions{},
+                      {layer("base", &base, {0.55, 0.55, 0.55}, 1.0, false),
+                       layer("graded start", &r.graded, {0.2, 0.4, 0.9}, 1.0, true),
+                       layer("fitted", &r.fitted, {0.85, 0.1, 0.1}, 1.5, false)},
+                      file);
+}
 
 void WriteConvergence(const ResizeResult& r, const std::filesystem::path& file) {
   Chart chart;
@@ -130,6 +151,7 @@ int RunResize(const ResizeCommandOptions& o, const GlobalOptions& global) {
   WriteJsonFile(o.out_dir / "report.json", report);
   WriteFileAtomically(o.out_dir / "report.txt", ResizeReportText(report));
   WriteConvergence(result, o.out_dir / "convergence.png");
+  WriteOverlay(base, result, o.out_dir / "overlay.png");
   spdlog::info(
       "fitted '{}' in {:.2f} s: worst binding error {:.3f} mm, worst seam mismatch "
       "{:.3f} mm; wrote {}",

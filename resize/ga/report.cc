@@ -151,7 +151,8 @@ json ResizeReportJson(const Pattern& base, const MeasurementSet& body, const Res
          {"achieved_mm", r.achieved_mm[b]},
          {"error_mm", r.achieved_mm[b] - r.targets_mm[b]},
          {"base_pattern_mm", BindingValue(base, binding)},
-         {"proportional_grading_mm", BindingValue(r.seed, binding)}});
+         {"proportional_grading_mm", BindingValue(r.seed, binding)},
+         {"graded_start_mm", BindingValue(r.graded, binding)}});
   }
   json seams = json::array();
   for (size_t s = 0; s < base.seams.size(); ++s) {
@@ -174,6 +175,16 @@ json ResizeReportJson(const Pattern& base, const MeasurementSet& body, const Res
                       {"area_ratio", c.area_ratio},
                       {"width_mm", c.width_mm},
                       {"height_mm", c.height_mm}});
+  json structure = json::array();
+  for (const StructureFigures& f : StructureChanges(base, r.fitted))
+    structure.push_back({{"piece", f.piece},
+                         {"max_kink_mm", f.max_kink_mm},
+                         {"max_level_tilt_deg", f.max_level_tilt_deg},
+                         {"max_fold_tilt_deg", f.max_fold_tilt_deg},
+                         {"max_grain_tilt_deg", f.max_grain_tilt_deg},
+                         {"max_corner_change_deg", f.max_corner_change_deg},
+                         {"max_dart_mismatch_mm", f.max_dart_mismatch_mm},
+                         {"new_inflections", f.new_inflections}});
   json history = json::array();
   for (const GenerationStats& g : r.history)
     history.push_back({{"generation", g.generation},
@@ -199,20 +210,22 @@ json ResizeReportJson(const Pattern& base, const MeasurementSet& body, const Res
           {"measurements", measurements},
           {"seams", seams},
           {"pieces", pieces},
+          {"structure", structure},
           {"history", history}};
 }
 
 std::string ResizeReportText(const json& report) {
   std::ostringstream s;
   s << "Bespoke resize report: pattern '" << report["pattern"].get<std::string>() << "'\n\n";
-  s << "Measurements (mm)      body     ease    target  achieved    error  prop.grading\n";
+  s << "Measurements (mm)      body     ease    target  achieved    error  prop.grading"
+       "  graded start\n";
   for (const json& m : report["measurements"]) {
-    char line[200];
-    std::snprintf(line, sizeof(line), "  %-18s %8.1f %8.1f %9.1f %9.1f %8.2f %12.1f\n",
+    char line[240];
+    std::snprintf(line, sizeof(line), "  %-18s %8.1f %8.1f %9.1f %9.1f %8.2f %12.1f %13.1f\n",
                   m["binding"].get<std::string>().c_str(), m["body_mm"].get<double>(),
                   m["ease_mm"].get<double>(), m["target_mm"].get<double>(),
                   m["achieved_mm"].get<double>(), m["error_mm"].get<double>(),
-                  m["proportional_grading_mm"].get<double>());
+                  m["proportional_grading_mm"].get<double>(), m["graded_start_mm"].get<double>());
     s << line;
   }
   s << "\nSeams (mm)             side a   side b     ease  mismatch\n";
@@ -232,6 +245,17 @@ std::string ResizeReportText(const json& report) {
                   m["max_angle_change_deg"].get<double>(),
                   m["critical_angle_change_deg"].get<double>(), m["area_ratio"].get<double>(),
                   m["width_mm"].get<double>(), m["height_mm"].get<double>());
+    s << line;
+  }
+  s << "\nStructure vs base       kink mm  level deg  fold deg  grain deg  corner deg  dart mm"
+       "  new inflections\n";
+  for (const json& m : report["structure"]) {
+    char line[240];
+    std::snprintf(line, sizeof(line), "  %-18s %9.3f %10.3f %9.3f %10.3f %11.3f %8.3f %16d\n",
+                  m["piece"].get<std::string>().c_str(), m["max_kink_mm"].get<double>(),
+                  m["max_level_tilt_deg"].get<double>(), m["max_fold_tilt_deg"].get<double>(),
+                  m["max_grain_tilt_deg"].get<double>(), m["max_corner_change_deg"].get<double>(),
+                  m["max_dart_mismatch_mm"].get<double>(), m["new_inflections"].get<int>());
     s << line;
   }
   s << "\nObjectives (as thesis Table 4.2: measurement Eq 4.5 mm, seam Eq 4.8, shape deg)\n";
