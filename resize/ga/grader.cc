@@ -1,7 +1,5 @@
 #include "resize/ga/grader.h"
 
-#include <cstdlib>
-
 #include "resize/ga/solve.h"
 #include "scanners/core/errors.h"
 
@@ -13,10 +11,7 @@ void GraderOptions::Check() const {
     throw InputError("grader options: share weight >= 0, iterations >= 0, tolerance and gap > 0");
 }
 
-GradeResult Grade(const GraderOptions& oo, const FitnessModel& model) {
-  GraderOptions o = oo;
-  if (getenv("RECT")) o.energy.rectilinear_weight = atof(getenv("RECT"));
-  if (getenv("SHEAR")) o.energy.shear_weight = atof(getenv("SHEAR"));
+GradeResult Grade(const GraderOptions& o, const FitnessModel& model) {
   o.Check();
   Eigen::SparseMatrix<double> s;
   Eigen::VectorXd target;

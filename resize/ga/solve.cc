@@ -4,8 +4,6 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "resize/pattern/geometry.h"
 #include "scanners/core/errors.h"
@@ -184,13 +182,6 @@ SolveReport SolveConstrained(const SolveOptions& o, const FitnessModel& model, c
     if (more.empty()) break;
     bounds.insert(bounds.end(), more.begin(), more.end());
     report = Solve(o, model, s, target, free, bounds, genes);
-    if (getenv("SOLVE_DEBUG")) {
-      fprintf(stderr, "round %d: %zu new bounds (", round, more.size());
-      for (auto& b : more)
-        fprintf(stderr, "%s:%d ", model.base().pieces[b.piece].name.c_str(), b.vertex);
-      fprintf(stderr, ") -> maxc %.4f obj %.4g it %d\n", report.max_constraint_after_mm,
-              report.objective, report.iterations);
-    }
   }
   report.max_constraint_before_mm = before;
   report.curve_bounds = static_cast<int>(bounds.size());
