@@ -6,6 +6,7 @@
 
 #include "eval/accuracy/accuracy_report.h"
 #include "scanners/core/atomic_file.h"
+#include "scanners/core/constants.h"
 #include "scanners/render/plot.h"
 
 namespace bespoke {
@@ -13,7 +14,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::array<double, 3> kSubjects = {0.55, 0.65, 0.8}, kBias = {0.8, 0.1, 0.1},
                                 kCi = {0.1, 0.2, 0.7}, kLimit = {0.2, 0.6, 0.2};
 

@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 
+#include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 #include "scanners/core/json_io.h"
 
@@ -12,7 +13,6 @@ namespace bespoke {
 namespace {
 
 using nlohmann::json;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 void CheckDocument(const json& document, const std::string& what) {
   if (!document.is_object()) throw InputError(what + ": not a JSON object");

@@ -5,13 +5,13 @@
 #include <limits>
 #include <map>
 
+#include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
 namespace {
 
 using nlohmann::json;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct Value {
   double value_mm = kNaN;

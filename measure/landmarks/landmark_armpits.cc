@@ -11,8 +11,6 @@
 namespace bespoke::landmarks {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 // The lateral pieces of slice `s` (not trunk, on the `sign` side, at least
 // 4 points) whose centroid lies within `radius` of `centre` (xy).
 std::vector<int> LateralPiecesNear(const Context& c, const Slice& s, int sign,

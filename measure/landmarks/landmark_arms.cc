@@ -11,7 +11,6 @@
 namespace bespoke::landmarks {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // Elbow position as a share of the shoulder-point-to-wrist distance along
 // the arm. Adult survey proportions (upper arm, acromion-radiale, about
 // 0.186 of stature; forearm, radiale-stylion, about 0.146) give 0.56 to the

@@ -10,6 +10,7 @@
 #ifndef BESPOKE_MEASURE_LANDMARKS_LANDMARK_CONTEXT_H_
 #define BESPOKE_MEASURE_LANDMARKS_LANDMARK_CONTEXT_H_
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,6 +20,8 @@
 #include "measure/landmarks/landmarks.h"
 
 namespace bespoke::landmarks {
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // What the armpit stage learnt about one arm (used by later stages).
 struct ArmInfo {

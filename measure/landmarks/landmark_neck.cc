@@ -11,7 +11,6 @@
 namespace bespoke::landmarks {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // Cervicale below the narrowest neck section, as a share of stature.
 constexpr double kBackNeckBelowNarrowest = 0.015;
 

@@ -8,11 +8,6 @@
 #include "scanners/core/errors.h"
 
 namespace bespoke::landmarks {
-namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-}  // namespace
 
 bool SeamPoint(const Context& c, double z, bool front, Eigen::Vector3d* out, double half_width_mm) {
   // Nearest slices first: a hole on the centre line at z borrows the

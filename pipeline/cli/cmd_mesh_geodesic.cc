@@ -32,14 +32,13 @@
 #include "oracle/truth/exact_geodesics.h"
 #include "pipeline/cli/commands.h"
 #include "pipeline/cli/progress_bar.h"
+#include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 #include "scanners/core/json_io.h"
 #include "scanners/io/scan_io.h"
 
 namespace bespoke {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct MeshGeodesicCommandOptions {
   std::filesystem::path mesh;        // any format ReadMesh reads

@@ -86,4 +86,9 @@ SeamSide Side(const PieceBuilder& b, const std::string& piece, const std::string
   return side;
 }
 
+Eigen::Vector2d Bisector(const Eigen::Vector2d& corner, const Eigen::Vector2d& a,
+                         const Eigen::Vector2d& b, double d_mm) {
+  return corner + ((a - corner).normalized() + (b - corner).normalized()).normalized() * d_mm;
+}
+
 }  // namespace bespoke

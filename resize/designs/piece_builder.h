@@ -56,6 +56,12 @@ class PieceBuilder {
 SeamSide Side(const PieceBuilder& b, const std::string& piece, const std::string& from,
               const std::string& to, bool forward);
 
+// The point `d_mm` from `corner` along the bisector of the angle a-corner-b
+// (all in the piece's plane, mm), for Aldrich-style curves that pass "2.5 cm
+// from the corner".
+Eigen::Vector2d Bisector(const Eigen::Vector2d& corner, const Eigen::Vector2d& a,
+                         const Eigen::Vector2d& b, double d_mm);
+
 }  // namespace bespoke
 
 #endif  // BESPOKE_RESIZE_DESIGNS_PIECE_BUILDER_H_

@@ -34,12 +34,6 @@ struct ShirtInput {
   double chest, neck, nwl, half_back, scye, shirt_length, arm, wrist;
 };
 
-// A point `d` mm from `corner` along the bisector into the piece, used by
-// Aldrich-style armhole curves ("2.5 cm from the corner").
-V Bisector(const V& corner, const V& dir_a, const V& dir_b, double d) {
-  return corner + (dir_a.normalized() + dir_b.normalized()).normalized() * d;
-}
-
 // Pushes the midpoint of a-b sideways by `offset` (positive = to the left of a->b).
 V Bulge(const V& a, const V& b, double t, double offset) {
   const V d = (b - a).normalized();
@@ -93,9 +87,8 @@ Body DraftBody(const ShirtInput& in) {
   b.Add(p29, "back_side_waist", "", true);
   b.Add(p16, "back_underarm", "armpit", true);
   const V back_corner(x10, y1);
-  const std::vector<V> back_armhole = SmoothCurve(
-      {p16, Bisector(back_corner, p16 - back_corner, p14 - back_corner, 25), p14, p15, p13},
-      kArmholeSamples);
+  const std::vector<V> back_armhole =
+      SmoothCurve({p16, Bisector(back_corner, p16, p14, 25), p14, p15, p13}, kArmholeSamples);
   b.AddCurve(back_armhole);
   b.Add(p13, "back_shoulder", "shoulder_point", true);
   b.Add(p8, "back_side_neck", "side_neck_point", true);
@@ -125,9 +118,8 @@ Body DraftBody(const ShirtInput& in) {
   f.Add(p20, "front_side_neck", "side_neck_point", true);
   f.Add(p23, "front_shoulder", "shoulder_point", true);
   const V front_corner(p25.x(), y1);
-  const std::vector<V> front_armhole = SmoothCurve(
-      {p23, p26, p25, Bisector(front_corner, p25 - front_corner, p16 - front_corner, 20), p16},
-      kArmholeSamples);
+  const std::vector<V> front_armhole =
+      SmoothCurve({p23, p26, p25, Bisector(front_corner, p25, p16, 20), p16}, kArmholeSamples);
   f.AddCurve(front_armhole);
   f.AddInside("cf_chest", V(x4, y1));
   f.MarkCritical(f.Index("front_shoulder") + kArmholeSamples / 2);

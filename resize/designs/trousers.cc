@@ -44,10 +44,6 @@ TrouserLines Lines(double waist, double seat, double inside_leg, double waist_he
   return t;
 }
 
-V Bisector(const V& corner, const V& a, const V& b, double d) {
-  return corner + ((a - corner).normalized() + (b - corner).normalized()).normalized() * d;
-}
-
 PieceBuilder DraftFront(const TrouserLines& t) {
   // Side seam on the left (x = 0 at the seat line), centre front on the right.
   const double seat_x = t.seat / 4 + 5;            // quarter seat + ease

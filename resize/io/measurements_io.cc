@@ -9,15 +9,10 @@
 
 #include "measure/catalogue/catalogue.h"
 #include "scanners/core/errors.h"
+#include "scanners/core/text.h"
 
 namespace bespoke {
 namespace {
-
-std::string Trim(const std::string& s) {
-  const size_t a = s.find_first_not_of(" \t\r\n");
-  if (a == std::string::npos) return "";
-  return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
-}
 
 // The catalogue name whose Valentina name is `valentina`, or "".
 std::string CatalogueName(const std::string& valentina) {
@@ -55,7 +50,7 @@ MeasurementSet MeasurementsFromVit(const std::string& text, const std::string& w
     if (!std::regex_search(attributes, n, name_attr) ||
         !std::regex_search(attributes, v, value_attr))
       throw InputError(what + ": a measurement <m> needs name and value");
-    const std::string name = n[1], value_text = Trim(v[1]);
+    const std::string name = n[1], value_text = StripBlanks(v[1].str());
     double value = 0;
     try {
       size_t used = 0;

@@ -9,6 +9,7 @@
 #include "resize/pattern/edit.h"
 #include "resize/pattern/geometry.h"
 #include "scanners/core/errors.h"
+#include "scanners/core/text.h"
 
 namespace bespoke {
 namespace {
@@ -18,12 +19,6 @@ struct Pair {
   std::string value;
   int line;
 };
-
-std::string Trim(const std::string& s) {
-  const size_t a = s.find_first_not_of(" \t\r");
-  if (a == std::string::npos) return "";
-  return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
-}
 
 std::vector<Pair> Tokenise(const std::string& text, const std::string& what) {
   std::vector<Pair> pairs;
@@ -37,12 +32,12 @@ std::vector<Pair> Tokenise(const std::string& text, const std::string& what) {
     ++line;
     try {
       size_t used = 0;
-      const int c = std::stoi(Trim(code), &used);
-      if (used != Trim(code).size()) throw std::invalid_argument("trailing");
-      pairs.push_back({c, Trim(value), line});
+      const int c = std::stoi(StripBlanks(code), &used);
+      if (used != StripBlanks(code).size()) throw std::invalid_argument("trailing");
+      pairs.push_back({c, StripBlanks(value), line});
     } catch (const std::exception&) {
       throw InputError(what + ": line " + std::to_string(line - 1) + ": bad group code '" +
-                       Trim(code) + "'");
+                       StripBlanks(code) + "'");
     }
   }
   return pairs;
