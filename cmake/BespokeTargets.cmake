@@ -31,6 +31,10 @@ set(BESPOKE_SHARED_DIR "${PROJECT_SOURCE_DIR}/../shared" CACHE PATH
 function(bespoke_add_library)
   cmake_parse_arguments(ARG "" "NAME" "SOURCES;PUBLIC_LIBS;PRIVATE_LIBS" ${ARGN})
   add_library(${ARG_NAME} STATIC ${ARG_SOURCES})
+  # A unity build parses the heavy headers (Eigen, JSON, PCL, CGAL, CLI11) once
+  # per batch instead of once per file; tests and tools stay one file a unit.
+  set_target_properties(${ARG_NAME} PROPERTIES UNITY_BUILD ${BESPOKE_UNITY_BUILD}
+                                               UNITY_BUILD_BATCH_SIZE 8)
   target_include_directories(${ARG_NAME} PUBLIC ${PROJECT_SOURCE_DIR})
   target_link_libraries(${ARG_NAME} PUBLIC ${ARG_PUBLIC_LIBS} bespoke_warnings
                                     PRIVATE ${ARG_PRIVATE_LIBS})
