@@ -234,6 +234,24 @@ void CloudGeodesics::SweepPoints(const Eigen::Vector3d& point, const std::vector
   }
 }
 
+int CloudGeodesics::NearestOf(const Eigen::Vector3d& from, const std::vector<int>& targets,
+                              const std::vector<double>& extra_mm, double* cost_mm) {
+  const auto [a, node_a] = Snap(from, "from");
+  Propagation& propagation = PropagationFrom(a, node_a);
+  *cost_mm = std::numeric_limits<double>::infinity();
+  int best = -1;
+  for (size_t i = 0; i < targets.size(); ++i) {
+    const int node = grid_.node_of_point(targets[i]);
+    if (grid_.component(node) != grid_.component(node_a)) continue;
+    propagation.Run(node);
+    if (!propagation.settled(node)) continue;
+    const double cost =
+        propagation.DistanceNear(node, grid_.index().point(targets[i])) + extra_mm[i];
+    if (cost < *cost_mm) *cost_mm = cost, best = static_cast<int>(i);
+  }
+  return best;
+}
+
 Eigen::VectorXd CloudGeodesics::DistancesAt(const Eigen::MatrixX3d& points) {
   if (!field_source_ || !cached_ || cached_->source() != *field_source_)
     throw InputError("geodesics: DistancesAt needs a distance field (DistancesFrom) first");

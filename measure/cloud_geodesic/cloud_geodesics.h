@@ -101,6 +101,14 @@ class CloudGeodesics {
 
   CloudDistanceField DistancesFrom(const Eigen::Vector3d& source, Progress* progress = nullptr);
   CloudGeodesicPath Between(const Eigen::Vector3d& from, const Eigen::Vector3d& to);
+  // Of the scan points `targets` (#T row indices into the scan), the one
+  // with the least first-order geodesic distance from `from` plus its
+  // `extra_mm` (#T, mm; e.g. a bridge on from it): its position in
+  // `targets`, -1 when none is reachable; `cost_mm` gets that sum. The
+  // propagation goes only as far as the targets, and Between(from, its
+  // point) then reuses it.
+  int NearestOf(const Eigen::Vector3d& from, const std::vector<int>& targets,
+                const std::vector<double>& extra_mm, double* cost_mm);
   // Distances from the last DistancesFrom source to other points near the
   // surface (#Q x 3, mm; e.g. a mesh's vertices): each point takes the
   // distance of its nearest scan point on the source's piece of the scan plus
