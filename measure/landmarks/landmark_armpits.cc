@@ -228,10 +228,157 @@ void FindArmpit(Context* c, int sign) {
   }
 }
 
+// The arm's centre line from the structure: the centroids of its points in
+// bands of geodesic distance from the hand (15 mm), from the armpit out.
+void CentreLineFromHand(const Context& c, int side, ArmInfo* arm) {
+  const std::vector<double>& d = c.structure.from_hand[side];
+  double top = 0;
+  for (int r : arm->rows)
+    if (std::isfinite(d[static_cast<size_t>(r)])) top = std::max(top, d[static_cast<size_t>(r)]);
+  const int bands = static_cast<int>(top / 15) + 1;
+  std::vector<Eigen::Vector3d> sum(static_cast<size_t>(bands), Eigen::Vector3d::Zero());
+  std::vector<int> count(static_cast<size_t>(bands), 0);
+  for (int r : arm->rows) {
+    if (!std::isfinite(d[static_cast<size_t>(r)])) continue;  // a piece apart from the body
+    const size_t b = static_cast<size_t>(d[static_cast<size_t>(r)] / 15);
+    sum[b] += c.P(r), ++count[b];
+  }
+  for (int b = bands - 1; b >= 0; --b)
+    if (count[static_cast<size_t>(b)] >= 8)
+      arm->centre_line.push_back(sum[static_cast<size_t>(b)] / count[static_cast<size_t>(b)]);
+}
+
+// The 2-D pieces of slice `s` made of the trunk's and this arm's points
+// (other limbs left out, linked within 12 mm), the central ones (holding
+// trunk points within 60 mm of the middle; a hole can split the trunk's
+// section) merged into the first. `central` gets 0 when there is one, -1
+// when none.
+std::vector<Piece> TrunkAndArmPieces(const Context& c, const Slice& s, Part arm_part,
+                                     int* central) {
+  std::vector<int> rows;
+  for (int r : s.rows) {
+    const Part p = c.PartOf(r);
+    if (p == Part::kTrunk || p == arm_part) rows.push_back(r);
+  }
+  std::vector<Piece> out(1);
+  for (Piece& piece : SplitPieces(c.points, rows, 12)) {
+    bool centre = false;
+    for (int r : piece.rows) centre |= std::abs(c.points(r, 0)) < 60 && c.PartOf(r) == Part::kTrunk;
+    if (centre)
+      out[0].rows.insert(out[0].rows.end(), piece.rows.begin(), piece.rows.end());
+    else
+      out.push_back(std::move(piece));
+  }
+  *central = out[0].rows.empty() ? -1 : 0;
+  return out;
+}
+
+// The armpit with the structure: in the slices from 100 mm above to 120 mm
+// below the structure's corner, the lateral extent of the trunk's piece
+// (with the arm while they are one section) drops where the arm leaves it:
+// the first slice, going down, 30 mm below the widest of the 60 mm above,
+// for three slices, to within 60 mm of the corner's side (a T-pose arm's
+// section shortens where the hand ends). Then as without the structure: an arm piece beside the
+// trunk (A-pose) puts the armpit on the trunk's side at the arm's centre;
+// none (T-pose), under the arm's underside. No drop: the arm touches the
+// trunk down its side; the corner is kept, flagged.
+void FindArmpitFromStructure(Context* c, int sign) {
+  const int side = sign > 0 ? 0 : 1;
+  ArmInfo& arm = c->arm[side];
+  const BodyStructure& b = c->structure;
+  const std::string name = "armpit" + Side(sign);
+  if (!b.has_hand[side] || !b.has_armpit[side]) {
+    c->Missing(name, "no arm reaches out of the trunk on this side");
+    return;
+  }
+  const Part arm_part = side == 0 ? Part::kArmRight : Part::kArmLeft;
+  for (Eigen::Index r = 0; r < c->points.rows(); ++r)
+    if (c->PartOf(static_cast<int>(r)) == arm_part) arm.rows.push_back(static_cast<int>(r));
+  CentreLineFromHand(*c, side, &arm);
+  if (arm.centre_line.size() >= 2) {
+    const Eigen::Vector3d axis = (arm.centre_line.back() - arm.centre_line.front()).normalized();
+    arm.t_pose = std::abs(axis.z()) < 0.5;  // more than 60 deg from the vertical
+  }
+  arm.found = true;
+  const Eigen::Vector3d corner = b.armpit[side];
+  const int top = SliceAt(c->slices, corner.z() + 100),
+            bottom = SliceAt(c->slices, corner.z() - 120);
+  std::vector<double> ext(c->slices.size(), -kInf);
+  for (int s = bottom; s <= top; ++s) {
+    int central = -1;
+    const auto pieces =
+        TrunkAndArmPieces(*c, c->slices[static_cast<size_t>(s)], arm_part, &central);
+    if (central >= 0)
+      for (int r : pieces[static_cast<size_t>(central)].rows)
+        ext[static_cast<size_t>(s)] = std::max(ext[static_cast<size_t>(s)], sign * c->points(r, 0));
+  }
+  int k = -1;
+  for (int s = top - 1; s >= bottom + 2 && k < 0; --s) {
+    double above = -kInf;
+    for (int t = s + 1; t <= std::min(top, s + 12); ++t)
+      above = std::max(above, ext[static_cast<size_t>(t)]);
+    bool drop = std::isfinite(above);
+    for (int t = s; t >= s - 2; --t)
+      drop &= ext[static_cast<size_t>(t)] < above - 30 &&
+              ext[static_cast<size_t>(t)] < sign * corner.x() + 60;
+    if (drop) k = s;
+  }
+  if (k < 0) {
+    arm.touching = true;
+    arm.armpit = corner;
+    arm.armpit_z = corner.z();
+    c->Put(name, corner, 0.4, "structure_corner_arm_touching", {"arm_touching_torso"});
+    return;
+  }
+  const Slice& below = c->slices[static_cast<size_t>(k)];
+  int central = -1;
+  const auto pieces = TrunkAndArmPieces(*c, below, arm_part, &central);
+  const double side_x = ext[static_cast<size_t>(k)];
+  // The arm's piece: the largest lateral piece within 250 mm of the trunk's side.
+  int piece = -1;
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    const Piece& p = pieces[i];
+    if (static_cast<int>(i) == central || p.rows.size() < 4 ||
+        sign * p.centroid.x() < side_x - 40 ||
+        (p.centroid - Eigen::Vector2d(sign * side_x, p.centroid.y())).norm() > 250)
+      continue;
+    if (piece < 0 || p.rows.size() > pieces[static_cast<size_t>(piece)].rows.size())
+      piece = static_cast<int>(i);
+  }
+  arm.armpit_z = below.z + 0.5 * c->step;
+  double y = corner.y();
+  if (piece >= 0) {
+    // The hollow lies under the arm's middle: the trunk's side at the arm's centre y.
+    y = pieces[static_cast<size_t>(piece)].centroid.y();
+  } else {
+    // Under a T-pose arm: the middle of the arm's underside where it meets the trunk.
+    double sum = 0;
+    int n = 0;
+    for (int r : c->slices[static_cast<size_t>(std::min<int>(k + 1, top))].rows) {
+      const double x = sign * c->points(r, 0);
+      if (x > side_x - 10 && x < side_x + 30) sum += c->points(r, 1), ++n;
+    }
+    if (n > 0) y = sum / n;
+  }
+  double x = -kInf;
+  if (central >= 0)
+    for (int r : pieces[static_cast<size_t>(central)].rows)
+      if (std::abs(c->points(r, 1) - y) < 10) x = std::max(x, sign * c->points(r, 0));
+  if (!(x > 0)) x = side_x;
+  if (!(x > 0)) x = sign * corner.x();
+  arm.armpit = Eigen::Vector3d(sign * x, y, arm.armpit_z);
+  c->Put(name, arm.armpit, 0.85, piece >= 0 ? "arm_trunk_gap_apex" : "arm_underside_meets_trunk");
+}
+
 }  // namespace
 
 void FindArmpits(Context* c) {
-  for (int sign : {+1, -1}) FindArmpit(c, sign);
+  for (int sign : {+1, -1}) {
+    if (c->structure.ok)
+      FindArmpitFromStructure(c, sign);
+    else
+      FindArmpit(c, sign);
+  }
 }
 
 }  // namespace bespoke::landmarks

@@ -20,6 +20,12 @@ namespace {
 // is straight.
 constexpr double kElbowShare = 0.49;
 constexpr double kStyloidPastNarrowest_mm = 15;
+// The shortest shoulder-to-arm's-end distance, as a share of stature, that
+// can hold a hand (shoulder to wrist is about 0.33).
+constexpr double kMinArmShare = 0.3;
+// Below this share of outward-facing normals at the arm's end, the end is
+// a cut, not a hand (EndCapShare).
+constexpr double kMinEndCapShare = 0.05;
 
 struct ArmFrame {
   Eigen::Vector3d origin,
@@ -69,6 +75,21 @@ double SectionRadius(const Context& c, const ArmFrame& f, double t, double half)
   return r;
 }
 
+// Of the arm's points within 20 mm of its end, the share whose normal faces
+// along the arm, outwards (n . axis > 0.5): the fingertips' round cap has
+// them, an arm cut off by the edge of the booth's view (an open tube) has
+// none. 1 without normals (not judged).
+double EndCapShare(const Context& c, const ArmFrame& f) {
+  if (!c.has_normals()) return 1;
+  int end = 0, out = 0;
+  for (size_t i = 0; i < f.rows.size(); ++i) {
+    if (f.t[i] < f.length - 20) continue;
+    ++end;
+    out += c.normals.row(f.rows[i]).dot(f.axis) > 0.5;
+  }
+  return end > 0 ? static_cast<double>(out) / end : 0;
+}
+
 // The row in the slab |t - t0| < half most extreme along `direction`
 // (noise averaged); -1 when the slab is empty.
 int BestInSlab(const Context& c, const ArmFrame& f, double t0, double half,
@@ -94,13 +115,16 @@ void FindArm(Context* c, int sign) {
   }
   std::vector<std::string> flags;
   double confidence = 0.75;
-  if (f.length < 0.3 * c->crown_z) {
-    // Shoulder to fingertips is about 0.44 of stature: the hand is not in
-    // the scan (out of the booth's view, or merged with the thigh).
+  const double cap = EndCapShare(*c, f);
+  if (f.length < kMinArmShare * c->crown_z || cap < kMinEndCapShare) {
+    // The hand is not in the scan (out of the booth's view, or merged with
+    // the thigh): its end is no reference for the wrist.
     for (const char* n : {"upper_arm", "elbow", "wrist"}) {
       c->Missing(n + side, "the arm's end is not in the scan (arm " +
                                std::to_string(static_cast<int>(f.length)) +
-                               " mm from the shoulder)");
+                               " mm from the shoulder, " +
+                               std::to_string(static_cast<int>(100 * cap)) +
+                               " % of its end facing outwards)");
     }
     return;
   }

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "measure/cloud_geodesic/point_index.h"
+#include "measure/landmarks/body_structure.h"
 #include "measure/landmarks/landmark_slices.h"
 #include "measure/landmarks/landmarks.h"
 
@@ -37,15 +38,20 @@ struct ArmInfo {
 
 struct Context {
   const Eigen::MatrixX3d& points;
+  const Eigen::MatrixX3d& normals;  // #P x 3 outward unit normals, or 0 x 3
   std::unique_ptr<PointIndex> index;
   std::vector<Slice> slices;
+  // The parts from geodesic structure (body_structure.h); when it failed
+  // (structure.ok false) the stages fall back to slice pieces alone.
+  BodyStructure structure;
   double step = 5;
   double crown_z = 0;  // stature (mm)
   double crotch_z = 0;
   ArmInfo arm[2];  // [0] right, [1] left
   LandmarkSet found;
 
-  explicit Context(const Eigen::MatrixX3d& p) : points(p) {}
+  Context(const Eigen::MatrixX3d& p, const Eigen::MatrixX3d& n) : points(p), normals(n) {}
+  bool has_normals() const { return normals.rows() == points.rows() && points.rows() > 0; }
   Eigen::Vector3d P(int row) const { return points.row(row).transpose(); }
   const Slice& At(double z) const { return slices[static_cast<size_t>(SliceAt(slices, z))]; }
 
@@ -63,9 +69,14 @@ struct Context {
   // cloud neighbours within `radius_mm`. -1 when `candidates` is empty.
   int SmoothExtreme(const std::vector<int>& candidates, const Eigen::Vector3d& direction,
                     double radius_mm = 12, double band_mm = 6) const;
-  // Rows of the trunk in slice `s`: the pieces reaching the body's middle
-  // (|x| < core_mm), which the arms and hands never do.
+  // Rows of the trunk in slice `s`: those the structure labels trunk; without
+  // a structure, the pieces reaching the body's middle (|x| < core_mm),
+  // which arms and hands away from the body never do.
   std::vector<int> TrunkRows(const Slice& s, double core_mm = 50) const;
+  // The part of cloud row `row` (kTrunk without a structure).
+  Part PartOf(int row) const {
+    return structure.ok ? structure.part[static_cast<size_t>(row)] : Part::kTrunk;
+  }
   // Trunk pieces of slice `s` (indices into s.pieces).
   std::vector<int> TrunkPieces(const Slice& s, double core_mm = 50) const;
 };

@@ -24,6 +24,23 @@ constexpr double kAnkleShare = 0.095;
 // crotch and down to the sole; empty where the leg was lost.
 std::vector<std::vector<int>> TrackLeg(const Context& c, int sign) {
   std::vector<std::vector<int>> leg(c.slices.size());
+  if (c.structure.ok) {
+    // The structure's leg: its points in each slice up to the crotch.
+    const Part part = sign > 0 ? Part::kLegRight : Part::kLegLeft;
+    const int end = SliceAt(c.slices, c.crotch_z - c.step);
+    bool any = false;
+    // Between the feet's path and a crotch above it (thighs that touch),
+    // the trunk's points on this side of x = 0 are the leg's.
+    const double joined = c.structure.crotch.z();
+    for (int s = 0; s <= end; ++s)
+      for (int r : c.slices[static_cast<size_t>(s)].rows)
+        if (c.PartOf(r) == part ||
+            (c.PartOf(r) == Part::kTrunk && c.points(r, 2) > joined && sign * c.points(r, 0) > 0))
+          leg[static_cast<size_t>(s)].push_back(r), any = true;
+    if (!any)
+      throw InputError("landmarks: no " + std::string(sign > 0 ? "right" : "left") + " leg found");
+    return leg;
+  }
   const int start = SliceAt(c.slices, 0.3 * c.crotch_z);
   const Slice& s0 = c.slices[static_cast<size_t>(start)];
   int first = -1;
@@ -119,8 +136,6 @@ void FindLeg(Context* c, int sign) {
   // way from the ankle to the knee, averaged over 25 mm (the calf's back is
   // a long flat arc; the bulge's middle is wanted, not the noise's peak).
   const double lo = ankle_z + 0.3 * (knee_z - ankle_z), hi = ankle_z + 0.9 * (knee_z - ankle_z);
-  // (The level of the largest leg girth instead was tried: MakeHuman
-  // median 37 -> 24 mm but parametric 5 -> 28 mm and worse maxima.)
   const int calf =
       BestNear(*c, leg, 0.5 * (lo + hi), 0.5 * (hi - lo), all, -Eigen::Vector3d::UnitY(), 25);
   if (calf >= 0)

@@ -110,7 +110,11 @@ bool SideNeck(const Context& c, int sign, const Neck& neck, double top_z,
 void AxillaFolds(Context* c, int sign, const Eigen::Vector3d& acromion) {
   const ArmInfo& arm = c->arm[sign > 0 ? 0 : 1];
   const double z = arm.armpit_z + 0.25 * (acromion.z() - arm.armpit_z);
-  const std::vector<int> rows = c->TrunkRows(c->At(z));
+  // The section with the arm: the folds are pockets between arm and trunk.
+  std::vector<int> rows = c->TrunkRows(c->At(z));
+  const Part arm_part = sign > 0 ? Part::kArmRight : Part::kArmLeft;
+  for (int r : c->At(z).rows)
+    if (c->structure.ok && c->PartOf(r) == arm_part) rows.push_back(r);
   Eigen::MatrixX2d xy(static_cast<Eigen::Index>(rows.size()), 2);
   for (size_t i = 0; i < rows.size(); ++i)
     xy.row(static_cast<Eigen::Index>(i)) = c->points.row(rows[i]).head<2>();

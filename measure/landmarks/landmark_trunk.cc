@@ -3,11 +3,105 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "measure/landmarks/landmark_context.h"
+#include "measure/tape/convex_hull_2d.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke::landmarks {
+namespace {
+
+// The lowest slice (above 30 % of stature) with one piece spanning x = 0
+// from side to side: below it the legs are two pieces. A hole under the
+// crotch leaves the front and back walls of the pelvis ring, which still
+// span x = 0, so the level survives it. -1 when there is none.
+double CrotchLevelFromSlices(const Context& c, double h) {
+  for (const Slice& s : c.slices) {
+    if (s.z < 0.3 * h || s.z > 0.65 * h) continue;
+    for (const Piece& p : s.pieces) {
+      if (p.lo.x() < -40 && p.hi.x() > 40 && p.rows.size() > 20) {
+        for (int r : p.rows)
+          if (std::abs(c.points(r, 0)) < 10) return s.z;
+      }
+    }
+  }
+  return -1;
+}
+
+// The crotch on the mid-sagittal profile: the trunk's lowest point in 5 mm
+// bins of y (|x| < 6 mm, from 60 mm below `level` to 80 mm above) is a
+// U rising to the pubis in front and the buttocks behind; the vertex of a
+// parabola fitted to its bottom 25 mm is the lowest point's y - stable on a
+// flat ridge, where the single lowest point wanders with the noise, and
+// across a hole in the bottom, which it bridges. False when the profile has no
+// bottom (fewer than three bins, or no upward curve).
+bool CrotchFromProfile(const Context& c, double level, Eigen::Vector3d* out) {
+  std::map<int, std::vector<double>> bins;
+  for (int s = SliceAt(c.slices, level - 60); s <= SliceAt(c.slices, level + 80); ++s)
+    for (int r : c.slices[static_cast<size_t>(s)].rows)
+      if (std::abs(c.points(r, 0)) < 6 && c.PartOf(r) == Part::kTrunk)
+        bins[static_cast<int>(std::floor(c.points(r, 1) / 5))].push_back(c.points(r, 2));
+  std::vector<Eigen::Vector2d> bottom;  // (y, z) of each bin's second lowest point
+  double lowest = kInf;
+  for (auto& [bin, z] : bins) {
+    if (z.size() < 2) continue;
+    std::nth_element(z.begin(), z.begin() + 1, z.end());
+    bottom.emplace_back(5.0 * bin + 2.5, z[1]);
+    lowest = std::min(lowest, z[1]);
+  }
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d atb = Eigen::Vector3d::Zero();
+  double y_lo = kInf, y_hi = -kInf;
+  int n = 0;
+  for (const Eigen::Vector2d& b : bottom) {
+    if (b.y() > lowest + 25) continue;
+    const Eigen::Vector3d a(1, b.x(), b.x() * b.x());
+    ata += a * a.transpose(), atb += a * b.y(), ++n;
+    y_lo = std::min(y_lo, b.x()), y_hi = std::max(y_hi, b.x());
+  }
+  if (n < 3 || y_hi - y_lo < 15) return false;
+  const Eigen::Vector3d k = ata.ldlt().solve(atb);
+  if (!(k(2) > 1e-5)) return false;
+  const double y = std::clamp(-k(1) / (2 * k(2)), y_lo, y_hi);
+  // Its height: the lowest bin within 10 mm of it; in a hole, the lowest
+  // rim (the ridge's bottom is flat more often than it dips further).
+  double z = kInf;
+  for (const Eigen::Vector2d& b : bottom)
+    if (std::abs(b.x() - y) <= 10) z = std::min(z, b.y());
+  if (!std::isfinite(z)) z = lowest;
+  *out = Eigen::Vector3d(0, y, z);
+  return true;
+}
+
+// Whether the body's front at x = 0 in the slice at height z is a crease
+// between two thighs that touch: the three most forward points within 6 mm
+// of x = 0 (trunk and legs) have normals turned sideways (mean |n_x| > 0.45:
+// the crease's walls face each other), or no point lies there in front.
+// Over the pubis and the belly the front faces forward or down (|n_x| small).
+bool FrontIsCrease(const Context& c, double z) {
+  std::vector<int> rows;
+  double middle = 0;
+  for (int r : c.At(z).rows) {
+    const Part p = c.PartOf(r);
+    if (p == Part::kTrunk || p == Part::kLegRight || p == Part::kLegLeft) {
+      middle += c.points(r, 1);
+      if (std::abs(c.points(r, 0)) < 6) rows.push_back(r);
+    }
+  }
+  middle /= std::max<double>(1, static_cast<double>(c.At(z).rows.size()));
+  rows.erase(
+      std::remove_if(rows.begin(), rows.end(), [&](int r) { return c.points(r, 1) < middle; }),
+      rows.end());
+  if (rows.size() < 3) return true;
+  std::partial_sort(rows.begin(), rows.begin() + 3, rows.end(),
+                    [&](int a, int b) { return c.points(a, 1) > c.points(b, 1); });
+  double nx = 0;
+  for (int k = 0; k < 3; ++k) nx += std::abs(c.normals(rows[static_cast<size_t>(k)], 0)) / 3;
+  return nx > 0.45;
+}
+
+}  // namespace
 
 bool SeamPoint(const Context& c, double z, bool front, Eigen::Vector3d* out, double half_width_mm) {
   // Nearest slices first: a hole on the centre line at z borrows the
@@ -76,68 +170,86 @@ void FindCrownAndCrotch(Context* c) {
          Eigen::Vector3d(top_xy.x(), top_xy.y(), top_z[std::min<size_t>(2, top_z.size() - 1)]), 1.0,
          "head_top");
   const double h = c->crown_z;
-  // Crotch level: the lowest slice (above 30 % of stature) with one trunk
-  // piece spanning x = 0 from side to side; below it the legs are two
-  // pieces. A hole under the crotch leaves the front and back walls of the
-  // pelvis ring, which still span x = 0, so the level survives it.
-  double level = -1;
-  for (const Slice& s : c->slices) {
-    if (s.z < 0.3 * h || s.z > 0.65 * h) continue;
-    for (const Piece& p : s.pieces) {
-      if (p.lo.x() < -40 && p.hi.x() > 40 && p.rows.size() > 20) {
-        bool crosses = false;
-        for (int r : p.rows) crosses |= std::abs(c->points(r, 0)) < 10;
-        if (crosses) {
-          level = s.z;
-          break;
-        }
-      }
-    }
-    if (level > 0) break;
-  }
+  // Crotch level: from the structure, the top of the path between the feet
+  // (where the legs part); without one, from the slices.
+  const double level =
+      c->structure.ok ? c->structure.crotch.z() + 10 : CrotchLevelFromSlices(*c, h);
   if (level < 0)
     throw InputError("landmarks: no legs found (the trunk never splits into two legs)");
-  // The crotch point: the lowest centre-line point near that level.
-  int best = -1;
-  for (int s = SliceAt(c->slices, level - 40); s <= SliceAt(c->slices, level + 10); ++s) {
-    for (int r : c->slices[static_cast<size_t>(s)].rows) {
-      if (std::abs(c->points(r, 0)) < 10 && (best < 0 || c->points(r, 2) < c->points(best, 2)))
-        best = r;
+  Eigen::Vector3d crotch;
+  if (c->structure.ok && c->has_normals()) {
+    // Thighs that touch: the legs meet below the crotch, and so does the
+    // path between the feet. Going up from it, the crotch is where the front
+    // at x = 0 turns from the crease between the thighs (its walls face each
+    // other) to the pubis, for two slices.
+    const double apex = c->structure.crotch.z();
+    double top = apex;
+    for (double z = apex; z < apex + 0.2 * h; z += c->step) {
+      top = z;
+      if (!FrontIsCrease(*c, z) && !FrontIsCrease(*c, z + c->step)) break;
+    }
+    if (top > apex + 20) {
+      Eigen::Vector3d front, back;
+      const bool has_front = SeamPoint(*c, top, true, &front),
+                 has_back = SeamPoint(*c, top, false, &back);
+      const double y =
+          has_front && has_back ? 0.5 * (front.y() + back.y()) : c->structure.crotch.y();
+      c->crotch_z = top;
+      c->Put("crotch", Eigen::Vector3d(0, y, top), 0.4, "top_of_thigh_contact",
+             {"thighs_touching"});
+      return;
     }
   }
-  if (best >= 0 && c->points(best, 2) > level - 40) {
-    // The bottom of the crotch is a ridge running front to back: its middle
-    // (median y of the centre-line points within 8 mm of the lowest). The
-    // noise-averaged lowest point instead was tried: worse on MakeHuman
-    // bodies (mean 35 -> 46 mm), whose crotch ridge is nearly flat.
-    std::vector<double> ys;
-    for (int s = SliceAt(c->slices, level - 40); s <= SliceAt(c->slices, level + 10); ++s) {
-      for (int r : c->slices[static_cast<size_t>(s)].rows) {
-        if (std::abs(c->points(r, 0)) < 10 && c->points(r, 2) < c->points(best, 2) + 8)
-          ys.push_back(c->points(r, 1));
-      }
-    }
-    std::nth_element(ys.begin(), ys.begin() + static_cast<std::ptrdiff_t>(ys.size() / 2), ys.end());
-    c->crotch_z = c->points(best, 2);
-    c->Put("crotch", Eigen::Vector3d(0, ys[ys.size() / 2], c->crotch_z), 0.7,
-           "legs_join_lowest_centre_point");
-  } else {
-    // Nothing on the centre line: a hole under the crotch.
-    const Slice& s = c->At(level);
-    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-    for (const Piece& p : s.pieces)
-      if (p.lo.x() < -40 && p.hi.x() > 40) centre = p.centroid;
-    c->crotch_z = level - 0.5 * c->step;
-    c->Put("crotch", Eigen::Vector3d(0, centre.y(), c->crotch_z), 0.5, "legs_join_level",
-           {"in_hole"});
+  if (CrotchFromProfile(*c, level, &crotch)) {
+    c->crotch_z = crotch.z();
+    c->Put("crotch", crotch, 0.7, "sagittal_profile_lowest");
+    return;
   }
+  // Nothing on the centre line: a hole under the crotch.
+  const Slice& s = c->At(level);
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  for (const Piece& p : s.pieces)
+    if (p.lo.x() < -40 && p.hi.x() > 40) centre = p.centroid;
+  c->crotch_z = level - 0.5 * c->step;
+  c->Put("crotch", Eigen::Vector3d(0, centre.y(), c->crotch_z), 0.5, "legs_join_level",
+         {"in_hole"});
 }
 
 namespace {
 
+// The level of the breast in the candidate rows: going down from the top,
+// the first slice whose front (along `dir`, mean of three slices) stands
+// out - no higher within 25 mm around it and at least 3 mm higher than the
+// front 60 mm below (the fold under the breast) - or -1 when the front only
+// grows downwards (no breast ahead of a belly).
+double BreastLevel(const Context& c, const std::vector<int>& rows, const Eigen::Vector3d& dir,
+                   int lo, int hi) {
+  std::vector<double> front(static_cast<size_t>(hi - lo + 1), -kInf);
+  for (int r : rows) {
+    const size_t k = static_cast<size_t>(SliceAt(c.slices, c.points(r, 2)) - lo);
+    if (k < front.size()) front[k] = std::max(front[k], c.P(r).dot(dir));
+  }
+  std::vector<double> mean(front.size(), -kInf);
+  for (size_t k = 1; k + 1 < front.size(); ++k)
+    mean[k] = (front[k - 1] + front[k] + front[k + 1]) / 3;
+  const int around = static_cast<int>(std::lround(25 / c.step)),
+            below = static_cast<int>(std::lround(60 / c.step));
+  for (int k = static_cast<int>(mean.size()) - 2; k >= 1; --k) {
+    if (!std::isfinite(mean[static_cast<size_t>(k)])) continue;
+    bool top = true;
+    for (int j = std::max(1, k - around); j <= std::min<int>(k + around, mean.size() - 2); ++j)
+      top &= !(mean[static_cast<size_t>(j)] > mean[static_cast<size_t>(k)]);
+    const int under = k - below;
+    if (top && under >= 1 && mean[static_cast<size_t>(under)] < mean[static_cast<size_t>(k)] - 3)
+      return c.slices[static_cast<size_t>(lo + k)].z;
+  }
+  return -1;
+}
+
 // The bust points: the most forward trunk point on each side between 2 %
 // and 10 % of stature below the armpit, between 30 % and 100 % of the
-// armpit's distance from the centre line.
+// armpit's distance from the centre line; where a breast stands out ahead
+// of a belly below it, at the breast's level (BreastLevel).
 void Bust(Context* c, double* bust_z) {
   const double h = c->crown_z;
   for (int sign : {+1, -1}) {
@@ -148,9 +260,10 @@ void Bust(Context* c, double* bust_z) {
       continue;
     }
     const double ax = sign * arm.armpit.x();
+    const int lo = SliceAt(c->slices, arm.armpit_z - 0.10 * h),
+              hi = SliceAt(c->slices, arm.armpit_z - 0.02 * h);
     std::vector<int> candidates;
-    for (int s = SliceAt(c->slices, arm.armpit_z - 0.10 * h);
-         s <= SliceAt(c->slices, arm.armpit_z - 0.02 * h); ++s) {
+    for (int s = lo; s <= hi; ++s) {
       for (int r : c->TrunkRows(c->slices[static_cast<size_t>(s)])) {
         const double x = sign * c->points(r, 0);
         if (x > 0.3 * ax && x < ax) candidates.push_back(r);
@@ -158,13 +271,19 @@ void Bust(Context* c, double* bust_z) {
     }
     // Breasts point forward and a little outward: the extreme along a
     // direction turned ~11 deg out from straight ahead.
-    const int best =
-        c->SmoothExtreme(candidates, Eigen::Vector3d(sign * 0.2, 1, 0).normalized(), 10, 4);
+    const Eigen::Vector3d dir = Eigen::Vector3d(sign * 0.2, 1, 0).normalized();
+    const double level = BreastLevel(*c, candidates, dir, lo, hi);
+    if (level > 0)
+      candidates.erase(
+          std::remove_if(candidates.begin(), candidates.end(),
+                         [&](int r) { return std::abs(c->points(r, 2) - level) > 15; }),
+          candidates.end());
+    const int best = c->SmoothExtreme(candidates, dir, 10, 4);
     if (best < 0) {
       c->Missing(name, "no chest points below the armpit");
       continue;
     }
-    c->Put(name, c->P(best), 0.8, "front_max_below_armpit");
+    c->Put(name, c->P(best), 0.8, level > 0 ? "breast_front_max" : "front_max_below_armpit");
     if (sign > 0) *bust_z = c->points(best, 2);
   }
 }
@@ -204,8 +323,10 @@ void FindTrunkLevels(Context* c) {
     c->Missing("under_bust", "needs the bust point");
   }
   // Hip (seat) level: the most backward point of the buttocks, between the
-  // crotch and 10 % of stature under the under-bust level.
-  const double top = under_z > 0 ? under_z - 0.1 * h : c->crotch_z + 0.15 * h;
+  // crotch and 10 % of stature under the under-bust level, at least 10 % of
+  // stature above the crotch (an under-bust found low on a big belly).
+  const double top =
+      std::max(under_z > 0 ? under_z - 0.1 * h : c->crotch_z + 0.15 * h, c->crotch_z + 0.1 * h);
   std::vector<int> behind;
   for (int s = SliceAt(c->slices, c->crotch_z); s <= SliceAt(c->slices, top); ++s) {
     for (int r : c->TrunkRows(c->slices[static_cast<size_t>(s)], 150)) {
@@ -225,7 +346,7 @@ void FindTrunkLevels(Context* c) {
     const double girth = HullPerimeter(c->points, rows);
     if (girth < best) best = girth, waist_z = z;
   }
-  if (waist_z < 0) throw InputError("landmarks: no waist found between the hip and the bust");
+  if (waist_z < 0) waist_z = waist_top;  // no room between hip and under-bust: the fallback below
   // No narrowing (the girth keeps falling up to the chest, common on men):
   // the waist level from trunk proportions, the crotch-to-shoulder height
   // split 0.455 : 0.545, the shoulder taken 7.8 % of stature above the armpit.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "measure/catalogue/catalogue.h"
@@ -71,6 +72,11 @@ std::vector<int> Context::TrunkPieces(const Slice& s, double core_mm) const {
 
 std::vector<int> Context::TrunkRows(const Slice& s, double core_mm) const {
   std::vector<int> rows;
+  if (structure.ok) {
+    for (int r : s.rows)
+      if (structure.part[static_cast<size_t>(r)] == Part::kTrunk) rows.push_back(r);
+    return rows;
+  }
   for (int i : TrunkPieces(s, core_mm)) {
     const auto& r = s.pieces[static_cast<size_t>(i)].rows;
     rows.insert(rows.end(), r.begin(), r.end());
@@ -119,6 +125,77 @@ void CheckSymmetry(LandmarkSet* set) {
   }
 }
 
+// Flags `name` as placed against body proportions (confidence <= 0.3) with
+// the reason in its method tag.
+void Implausible(LandmarkSet* set, const std::string& name, const std::string& why) {
+  auto it = set->points.find(name);
+  if (it == set->points.end()) return;
+  Landmark& l = it->second;
+  if (std::find(l.flags.begin(), l.flags.end(), "implausible") != l.flags.end()) return;
+  l.flags.push_back("implausible");
+  l.method += " (" + why + ")";
+  l.confidence = std::min(l.confidence, 0.3);
+}
+
+// Heights as shares of stature `h` that adults span with a wide margin
+// (anthropometric surveys put the means at crotch 0.47, armpit 0.73,
+// acromion 0.82, cervicale 0.85, waist 0.61, buttock 0.50, knee 0.28,
+// lateral malleolus 0.04): a point outside is flagged, not passed on.
+void CheckProportions(LandmarkSet* set, double h) {
+  struct Range {
+    const char* name;
+    double lo, hi;
+  };
+  static const Range kRanges[] = {
+      {"crotch", 0.40, 0.55},
+      {"armpit_right", 0.65, 0.80},
+      {"armpit_left", 0.65, 0.80},
+      {"shoulder_right", 0.76, 0.88},
+      {"shoulder_left", 0.76, 0.88},
+      {"back_neck", 0.80, 0.90},
+      {"front_neck", 0.76, 0.87},
+      {"front_waist", 0.52, 0.70},
+      {"back_waist", 0.52, 0.70},
+      {"side_waist_right", 0.52, 0.70},
+      {"side_waist_left", 0.52, 0.70},
+      {"hip_back", 0.42, 0.58},
+      {"hip_right", 0.42, 0.58},
+      {"hip_left", 0.42, 0.58},
+      {"knee_right", 0.22, 0.34},
+      {"knee_left", 0.22, 0.34},
+      {"ankle_outside_right", 0.02, 0.075},
+      {"ankle_outside_left", 0.02, 0.075},
+      {"ankle_inside_right", 0.02, 0.075},
+      {"ankle_inside_left", 0.02, 0.075},
+  };
+  for (const Range& r : kRanges) {
+    if (!set->Has(r.name)) continue;
+    const double share = set->points.at(r.name).position_mm.z() / h;
+    if (share < r.lo || share > r.hi) {
+      char why[96];
+      std::snprintf(why, sizeof(why), "height %.2f of stature, expected %.2f-%.2f", share, r.lo,
+                    r.hi);
+      Implausible(set, r.name, why);
+    }
+  }
+  // Order down the trunk: bust under the armpit, under-bust under the bust,
+  // waist between hip and under-bust, hip above the crotch.
+  auto z = [&](const char* name) { return set->points.at(name).position_mm.z(); };
+  for (const char* side : {"_right", "_left"}) {
+    const std::string bust = std::string("bust") + side, armpit = std::string("armpit") + side;
+    if (set->Has(bust) && set->Has(armpit) &&
+        (z(bust.c_str()) > z(armpit.c_str()) + 0.01 * h ||
+         z(bust.c_str()) < z(armpit.c_str()) - 0.15 * h))
+      Implausible(set, bust, "not 0-15 % of stature under the armpit");
+  }
+  if (set->Has("under_bust") && set->Has("bust_right") && z("under_bust") > z("bust_right"))
+    Implausible(set, "under_bust", "above the bust point");
+  if (set->Has("hip_back") && set->Has("crotch") && z("hip_back") < z("crotch"))
+    Implausible(set, "hip_back", "below the crotch");
+  if (set->Has("front_waist") && set->Has("hip_back") && z("front_waist") < z("hip_back"))
+    Implausible(set, "front_waist", "below the hip level");
+}
+
 }  // namespace
 }  // namespace landmarks
 
@@ -136,13 +213,15 @@ LandmarkSet DetectLandmarks(const LandmarkOptions& options, const PointCloud& cl
     throw InputError("landmarks: the cloud is " + std::to_string(static_cast<int>(height)) +
                      " mm tall; expected a standing adult in the body frame (mm, +z up)");
   }
-  Context c(cloud.points);
+  Context c(cloud.points, cloud.normals);
   c.index = std::make_unique<PointIndex>(cloud.points);
   SliceOptions slice_options;
   slice_options.step_mm = options.slice_step_mm;
   slice_options.half_thickness_mm = options.slice_half_thickness_mm;
   c.step = options.slice_step_mm;
   c.slices = SliceCloud(slice_options, cloud.points);
+  c.structure = FindBodyStructure(BodyStructureOptions{}, cloud.points, cloud.normals,
+                                  cloud.points.col(2).maxCoeff());
   if (progress) progress->Begin("landmarks", 3);
   FindCrownAndCrotch(&c);  // InputError here: not a standing person
   Run(&c, FindArmpits, Both({"armpit", "axilla_front", "axilla_back"}));
@@ -158,6 +237,7 @@ LandmarkSet DetectLandmarks(const LandmarkOptions& options, const PointCloud& cl
   Run(&c, FindLegs, Both({"thigh", "knee", "calf", "ankle_inside", "ankle_outside"}));
   ProgressUpdate(progress, 2);
   CheckSymmetry(&c.found);
+  CheckProportions(&c.found, c.crown_z);
 
   LandmarkSet set = std::move(c.found);
   const Catalogue& catalogue = Catalogue::Builtin();

@@ -32,6 +32,14 @@ struct ScannedBody {
 
 ScannedBody ScanAndClean(const ScannedBodyOptions& options, const Body& body);
 
+// Makes the thighs touch, as on a heavy body: below the true crotch every
+// point moves towards x = 0 by up to `squeeze_mm` (ramping in over the 60 mm
+// under the crotch and out towards 55 % of the crotch height), and the
+// points that cross x = 0 (each thigh's inner side, now inside the other)
+// are dropped, so the thighs meet along a contact no sensor sees, as real
+// touching thighs do. The true datum points on the legs move with the skin.
+void SqueezeThighs(double squeeze_mm, ScannedBody* scan);
+
 }  // namespace bespoke::testing
 
 #endif  // BESPOKE_ORACLE_SCAN_SIM_SCANNED_BODY_H_
