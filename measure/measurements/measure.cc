@@ -12,6 +12,7 @@
 #include <set>
 #include <thread>
 
+#include "measure/measurements/geodesic_paths.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
@@ -78,8 +79,41 @@ double DistanceToPoints(const Eigen::MatrixX3d& points, const Vec& x) {
   return std::sqrt((points.rowwise() - x.transpose()).rowwise().squaredNorm().minCoeff());
 }
 
+// The scan's noise and point spacing (mm), for uncertainty_mm.
+struct ScanQuality {
+  double noise_mm = 0, spacing_mm = 0;
+};
+
+double Sigma(const LandmarkSet& set, const std::string& name) {
+  return LandmarkSigma(name, set.points.at(name));
+}
+
+// SD (mm) of a girth from its datum points: the plane moved along its
+// normal by their SD (probed at most 10 mm either way and scaled up), the
+// girth remeasured; the larger change. A probe whose section jumps by more
+// than a fifth (into the arms, the shoulders) is not a measure of the
+// datum's effect and is left out.
+double GirthSd(const MeasureOptions& o, const MeasurementDef& m, const PointCloud& cloud,
+               const LandmarkSet& set, const Vec& point, const Vec& normal,
+               const Eigen::MatrixX3d& anchors, double girth_mm) {
+  double var = 0;
+  for (const std::string& name : m.datum) var += Sigma(set, name) * Sigma(set, name);
+  double sd = std::sqrt(var);
+  if (m.plane == GirthPlane::kHorizontal) sd /= static_cast<double>(m.datum.size());
+  if (m.plane == GirthPlane::kPerpendicularToAxis) sd = Sigma(set, m.datum[0]);
+  const double probe = std::min(sd, 10.0);
+  double change = 0;
+  for (double sign : {-1.0, 1.0}) {
+    const SectionGirth s = MeasureSectionGirth(o.section, cloud.points, cloud.normals,
+                                               point + sign * probe * normal, normal, anchors);
+    const double d = std::abs(s.girth_mm - girth_mm);
+    if (s.points > 0 && d < 0.2 * girth_mm) change = std::max(change, d);
+  }
+  return probe > 0 ? change * sd / probe : 0;
+}
+
 Measurement Girth(const MeasureOptions& o, const MeasurementDef& m, const PointCloud& cloud,
-                  const LandmarkSet& set) {
+                  const LandmarkSet& set, const ScanQuality& scan) {
   Measurement out = Start(m);
   auto [point, normal] = GirthPlane(m, set);
   Eigen::MatrixX3d anchors(static_cast<Eigen::Index>(m.datum.size()), 3);
@@ -105,170 +139,28 @@ Measurement Girth(const MeasureOptions& o, const MeasurementDef& m, const PointC
   if (m.side == "right" && s.part.col(0).minCoeff() <= 0)
     out.flags.push_back("section_crosses_midline");
   if (o.keep_geometry) out.geometry = s.hull;
+  out.uncertainty_mm =
+      Uncertainty95(o.uncertainty, GirthSd(o, m, cloud, set, point, normal, anchors, s.girth_mm),
+                    scan.noise_mm, scan.spacing_mm, 0);
   return out;
 }
 
-// Geodesic paths between landmark pairs over one CloudGeodesics, sharing the
-// propagation of a start point: sources are taken greedily (the landmark in
-// most pending pairs first), every pair touching it solved from it.
-class PathCache {
-  struct Entry {
-    double length_mm = 0;
-    Eigen::MatrixX3d points;
-    std::string error;
-  };
-  struct End {
-    Vec start;             // where the path starts on the scan
-    double bridge_mm = 0;  // straight bridge from there to the datum point
-    bool in_hole = false;
-  };
-
- public:
-  void Need(const std::string& a, const std::string& b) {
-    if (a != b) pending_.insert(std::minmax(a, b));
+// The path a -> b of `paths`: length, bridged part, points; Skip when none.
+GeodesicPath PathBetween(const GeodesicPaths& paths, const std::string& a, const std::string& b,
+                         const LandmarkSet& set) {
+  GeodesicPath out;
+  if (a == b) {
+    out.points = Position(set, a).transpose();
+    return out;
   }
-  bool empty() const { return pending_.empty(); }
-
-  // A datum point in a scan hole (farther than tolerance_mm from every scan
-  // point, at most max_bridge_mm) is reached by the shortest surface path
-  // plus a straight bridge across the hole: from the other end's distance
-  // field, the scan point p within max_bridge_mm of the datum point that
-  // minimises geodesic(other, p) + |p - datum| (a tape bridging the crotch).
-  // With both ends in holes, each bridges from its nearest scan point.
-  void Solve(CloudGeodesics& geodesics, const LandmarkSet& set, double tolerance_mm,
-             double max_bridge_mm, int threads, Progress* progress) {
-    for (const auto& pair : pending_)
-      for (const std::string& name : {pair.first, pair.second}) {
-        if (ends_.count(name)) continue;
-        const Vec& x = set.points.at(name).position_mm;
-        double d2 = 0;
-        const int nearest = geodesics.grid().index().Nearest(x, &d2);
-        End end{x, 0.0, false};
-        if (nearest >= 0 && std::sqrt(d2) > tolerance_mm && std::sqrt(d2) <= max_bridge_mm)
-          end = {geodesics.grid().index().point(nearest), std::sqrt(d2), true};
-        ends_[name] = end;
-      }
-    ProgressBegin(progress, "geodesics", static_cast<std::int64_t>(pending_.size()));
-    // Plan: source groups, greedily (the landmark in most pending pairs first).
-    std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>> groups;
-    while (!pending_.empty()) {
-      std::map<std::string, int> degree;
-      for (const auto& [a, b] : pending_) ++degree[a], ++degree[b];
-      const std::string source =
-          std::max_element(degree.begin(), degree.end(), [](const auto& x, const auto& y) {
-            return x.second < y.second;
-          })->first;
-      groups.emplace_back(source, std::vector<std::pair<std::string, std::string>>());
-      for (auto it = pending_.begin(); it != pending_.end();) {
-        if (it->first != source && it->second != source) {
-          ++it;
-          continue;
-        }
-        groups.back().second.push_back(*it);
-        it = pending_.erase(it);
-      }
-    }
-    // Groups to workers (largest first, to the least loaded); worker 0 uses
-    // `geodesics`, the others build their own grid (CloudGeodesics keeps a
-    // per-object cache and is not thread-safe).
-    const int workers = std::max(1, std::min<int>(threads, static_cast<int>(groups.size())));
-    std::vector<std::vector<std::size_t>> assigned(static_cast<std::size_t>(workers));
-    std::vector<std::size_t> load(static_cast<std::size_t>(workers), 0);
-    std::vector<std::size_t> order(groups.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
-      return groups[x].second.size() > groups[y].second.size();
-    });
-    for (std::size_t g : order) {
-      const auto w =
-          static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
-      assigned[w].push_back(g), load[w] += groups[g].second.size();
-    }
-    std::vector<std::map<std::pair<std::string, std::string>, Entry>> results(
-        static_cast<std::size_t>(workers));
-    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(workers));
-    auto work = [&](std::size_t w) {
-      try {
-        std::unique_ptr<CloudGeodesics> own;
-        if (w > 0)
-          own = std::make_unique<CloudGeodesics>(geodesics.options(),
-                                                 geodesics.grid().index().points());
-        CloudGeodesics& g = w > 0 ? *own : geodesics;
-        for (std::size_t k : assigned[w])
-          for (const auto& pair : groups[k].second)
-            results[w][pair] = SolvePair(g, set, groups[k].first, pair, max_bridge_mm);
-      } catch (...) {
-        errors[w] = std::current_exception();
-      }
-    };
-    std::vector<std::thread> pool;
-    for (std::size_t w = 1; w < static_cast<std::size_t>(workers); ++w) pool.emplace_back(work, w);
-    work(0);
-    for (std::thread& t : pool) t.join();
-    for (const std::exception_ptr& e : errors)
-      if (e) std::rethrow_exception(e);
-    std::int64_t done = 0;
-    for (auto& r : results) done += static_cast<std::int64_t>(r.size()), solved_.merge(r);
-    ProgressUpdate(progress, done);
-    ProgressEnd(progress);
-  }
-
-  Entry SolvePair(CloudGeodesics& geodesics, const LandmarkSet& set, const std::string& source,
-                  const std::pair<std::string, std::string>& pair, double max_bridge_mm) const {
-    const std::string& target = pair.first == source ? pair.second : pair.first;
-    Entry entry;
-    try {
-      End from = ends_.at(source), to = ends_.at(target);
-      const bool flip = from.in_hole && !to.in_hole;  // solve from the end on the scan
-      if (flip) std::swap(from, to);
-      if (to.in_hole && !from.in_hole)
-        to = BestExit(geodesics, from, set.points.at(flip ? source : target).position_mm,
-                      max_bridge_mm);
-      CloudGeodesicPath p = geodesics.Between(from.start, to.start);
-      entry.length_mm = p.length_mm + from.bridge_mm + to.bridge_mm;
-      const Vec& a = set.points.at(flip ? target : source).position_mm;
-      const Vec& b = set.points.at(flip ? source : target).position_mm;
-      Eigen::MatrixX3d points(p.points.rows() + 2, 3);
-      points << a.transpose(), p.points, b.transpose();     // from `a` to `b`
-      const bool forward = (pair.first == source) != flip;  // stored from pair.first
-      entry.points = forward ? points : Eigen::MatrixX3d(points.colwise().reverse());
-    } catch (const InputError& e) {
-      entry.error = e.what();
-    }
-    return entry;
-  }
-
-  // Length and path from a to b; Skip when there is no path.
-  std::pair<double, Eigen::MatrixX3d> Get(const std::string& a, const std::string& b,
-                                          const LandmarkSet& set) const {
-    if (a == b) return {0.0, Eigen::MatrixX3d(Position(set, a).transpose())};
-    const Entry& e = solved_.at(std::minmax(a, b));
-    if (!e.error.empty())
-      throw Skip{"no geodesic " + a + " -> " + b + " over the scan: " + e.error};
-    return {e.length_mm, a < b ? e.points : Eigen::MatrixX3d(e.points.colwise().reverse())};
-  }
-
- private:
-  static End BestExit(CloudGeodesics& geodesics, const End& from, const Vec& datum,
-                      double max_bridge_mm) {
-    const CloudDistanceField field = geodesics.DistancesFrom(from.start);
-    const Eigen::MatrixX3d& points = geodesics.grid().index().points();
-    End best{datum, 0, true};
-    double cost = std::numeric_limits<double>::infinity();
-    if (field.point_distance_mm.size() != points.rows()) return best;
-    for (Eigen::Index i = 0; i < points.rows(); ++i) {
-      const double bridge = (points.row(i).transpose() - datum).norm();
-      if (bridge > max_bridge_mm || !std::isfinite(field.point_distance_mm(i))) continue;
-      if (field.point_distance_mm(i) + bridge < cost)
-        cost = field.point_distance_mm(i) + bridge,
-        best = {points.row(i).transpose(), bridge, true};
-    }
-    return best;
-  }
-  std::set<std::pair<std::string, std::string>> pending_;
-  std::map<std::pair<std::string, std::string>, Entry> solved_;
-  std::map<std::string, End> ends_;
-};
+  const GeodesicPath* p = paths.Get(a, b);
+  if (p == nullptr) throw Skip{"no geodesic " + a + " -> " + b + " was computed"};
+  if (!p->error.empty())
+    throw Skip{"no geodesic " + a + " -> " + b + " over the scan: " + p->error};
+  out = *p;
+  if (a > b) out.points = out.points.colwise().reverse().eval();
+  return out;
+}
 
 Eigen::MatrixX3d Stack(const std::vector<Eigen::MatrixX3d>& pieces) {
   Eigen::Index rows = 0;
@@ -279,14 +171,46 @@ Eigen::MatrixX3d Stack(const std::vector<Eigen::MatrixX3d>& pieces) {
   return out;
 }
 
+// Unit direction of a polyline at its start (towards its inside), from
+// its first `reach_mm`; zero when too short.
+Vec StartDirection(const Eigen::MatrixX3d& path, double reach_mm = 20) {
+  for (Eigen::Index i = 1; i < path.rows(); ++i) {
+    const Vec d = path.row(i) - path.row(0);
+    if (d.norm() >= reach_mm || i + 1 == path.rows())
+      return d.norm() > 0 ? Vec(d.normalized()) : Vec::Zero();
+  }
+  return Vec::Zero();
+}
+
+// SD (mm) of a geodesic chain from its datum points: each end moves the
+// length by its SD along the path; an inner point by its SD times the turn
+// of the path there (|direction in - direction out|).
+double ChainSd(const MeasurementDef& m, const LandmarkSet& set,
+               const std::vector<Eigen::MatrixX3d>& pieces) {
+  double var = 0;
+  for (std::size_t i = 0; i < m.datum.size(); ++i) {
+    const double sigma = Sigma(set, m.datum[i]);
+    double weight = 1;
+    if (i > 0 && i + 1 < m.datum.size() && i < pieces.size()) {
+      const Vec out = StartDirection(pieces[i]);
+      const Vec in = -StartDirection(pieces[i - 1].colwise().reverse());
+      weight = (out - in).norm();
+    }
+    var += weight * weight * sigma * sigma;
+  }
+  return std::sqrt(var);
+}
+
 Measurement Length(const MeasureOptions& o, const MeasurementDef& m, const LandmarkSet& set,
-                   const PathCache& paths, const PointIndex* index) {
+                   const GeodesicPaths& paths, const PointIndex* index, const ScanQuality& scan) {
   Measurement out = Start(m);
+  double sd = 0;
   const Vec a = Position(set, m.datum[0]);
   if (m.method == MeasurementMethod::kBreadth) {
     const Vec b = Position(set, m.datum[1]);
     out.value_mm = (a - b).head<2>().norm();
     out.geometry = (Eigen::MatrixX3d(2, 3) << a.transpose(), b.transpose()).finished();
+    sd = std::hypot(Sigma(set, m.datum[0]), Sigma(set, m.datum[1]));
   } else if (m.method == MeasurementMethod::kPointToLine) {
     const Vec b = Position(set, m.datum[1]), c = Position(set, m.datum[2]);
     if (!((c - b).norm() > 0)) throw Skip{"the line's two points coincide"};
@@ -294,15 +218,21 @@ Measurement Length(const MeasureOptions& o, const MeasurementDef& m, const Landm
     const Vec foot = b + (a - b).dot(d) * d;
     out.value_mm = (a - foot).norm();
     out.geometry = (Eigen::MatrixX3d(2, 3) << a.transpose(), foot.transpose()).finished();
+    sd = std::sqrt(Sigma(set, m.datum[0]) * Sigma(set, m.datum[0]) +
+                   0.5 * (Sigma(set, m.datum[1]) * Sigma(set, m.datum[1]) +
+                          Sigma(set, m.datum[2]) * Sigma(set, m.datum[2])));
   } else {
     std::vector<Eigen::MatrixX3d> pieces;
     for (std::size_t i = 0; i + 1 < m.datum.size(); ++i) {
-      auto [length, points] = paths.Get(m.datum[i], m.datum[i + 1], set);
-      out.value_mm += length;
-      pieces.push_back(std::move(points));
+      GeodesicPath path = PathBetween(paths, m.datum[i], m.datum[i + 1], set);
+      out.value_mm += path.length_mm;
+      out.bridged_mm += path.bridged_mm;
+      pieces.push_back(std::move(path.points));
     }
+    sd = ChainSd(m, set, pieces);
     const Vec last = Position(set, m.datum.back());
     if (m.to_floor) {
+      sd = std::hypot(sd, Sigma(set, m.datum.back()));
       out.value_mm += last.z();
       pieces.push_back(
           (Eigen::MatrixX3d(2, 3) << last.transpose(), last.x(), last.y(), 0.0).finished());
@@ -316,20 +246,27 @@ Measurement Length(const MeasureOptions& o, const MeasurementDef& m, const Landm
         break;
       }
     }
+    if (out.bridged_mm > 0) out.flags.push_back("bridged");
   }
   if (!o.keep_geometry) out.geometry.resize(0, 3);
+  out.uncertainty_mm =
+      Uncertainty95(o.uncertainty, sd, scan.noise_mm, scan.spacing_mm, out.bridged_mm);
   return out;
 }
 
-Measurement Height(const MeasureOptions& o, const MeasurementDef& m, const LandmarkSet& set) {
+Measurement Height(const MeasureOptions& o, const MeasurementDef& m, const LandmarkSet& set,
+                   const ScanQuality& scan) {
   Measurement out = Start(m);
   const Vec a = Position(set, m.datum[0]);
   out.value_mm = a.z();
   Vec foot(a.x(), a.y(), 0.0);
+  double sd = Sigma(set, m.datum[0]);
   if (m.datum.size() == 2) {
     out.value_mm -= Position(set, m.datum[1]).z();
     foot.z() = Position(set, m.datum[1]).z();
+    sd = std::hypot(sd, Sigma(set, m.datum[1]));
   }
+  out.uncertainty_mm = Uncertainty95(o.uncertainty, sd, scan.noise_mm, scan.spacing_mm, 0);
   if (o.keep_geometry)
     out.geometry = (Eigen::MatrixX3d(2, 3) << a.transpose(), foot.transpose()).finished();
   return out;
@@ -354,6 +291,7 @@ class StageClock {
 void MeasureOptions::Check() const {
   section.Check();
   geodesics.Check();
+  uncertainty.Check();
   if (!(datum_tolerance_mm > 0)) throw InputError("measure: datum_tolerance_mm must be > 0");
   if (!(arms_margin_mm >= 0)) throw InputError("measure: arms_margin_mm must be >= 0");
   if (!(lower_step_mm > 0) || !(max_lower_mm >= 0))
@@ -410,7 +348,7 @@ MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue,
   const auto start = std::chrono::steady_clock::now();
   MeasureResult result;
   std::vector<const MeasurementDef*> todo;
-  PathCache paths;
+  GeodesicPaths paths;
   for (const std::string& name : options.only)
     catalogue.Measurement(name);  // InputError when unknown
   for (const MeasurementDef& m : catalogue.measurements()) {
@@ -440,13 +378,18 @@ MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue,
     }
   };
 
+  ScanQuality scan;
+  {
+    const PointIndex index(body_cloud.points);
+    scan.noise_mm = ScanNoise(index, &scan.spacing_mm);
+  }
   StageClock girth_clock("girths");
   std::int64_t girths = 0, n_girths = 0;
   for (const MeasurementDef* m : todo) n_girths += m->kind == MeasurementKind::kGirth;
   ProgressBegin(progress, "girths", n_girths);
   for (const MeasurementDef* m : todo) {
     if (m->method != MeasurementMethod::kSectionHull) continue;
-    attempt(*m, [&] { return Girth(options, *m, body_cloud, landmarks); });
+    attempt(*m, [&] { return Girth(options, *m, body_cloud, landmarks, scan); });
     ProgressUpdate(progress, ++girths);
   }
   ProgressEnd(progress);
@@ -458,17 +401,20 @@ MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue,
     geodesics = std::make_unique<CloudGeodesics>(options.geodesics, body_cloud.points, progress);
     result.stages.push_back(grid_clock.Stop());
     StageClock path_clock("geodesics");
-    paths.Solve(*geodesics, landmarks, options.datum_tolerance_mm, options.max_bridge_mm,
-                options.geodesic_threads, progress);
+    GeodesicPathOptions path_options;
+    path_options.tolerance_mm = options.datum_tolerance_mm;
+    path_options.max_bridge_mm = options.max_bridge_mm;
+    path_options.threads = options.geodesic_threads;
+    paths.Solve(path_options, *geodesics, body_cloud.normals, landmarks, progress);
     result.stages.push_back(path_clock.Stop());
   }
   StageClock other_clock("lengths_heights");
   const PointIndex* index = geodesics ? &geodesics->grid().index() : nullptr;
   for (const MeasurementDef* m : todo) {
     if (m->kind == MeasurementKind::kHeight)
-      attempt(*m, [&] { return Height(options, *m, landmarks); });
+      attempt(*m, [&] { return Height(options, *m, landmarks, scan); });
     else if (m->kind == MeasurementKind::kLength)
-      attempt(*m, [&] { return Length(options, *m, landmarks, paths, index); });
+      attempt(*m, [&] { return Length(options, *m, landmarks, paths, index, scan); });
   }
   result.stages.push_back(other_clock.Stop());
 

@@ -26,9 +26,11 @@
 //                             (names in Measurement::uncertain_landmarks)
 //   "datum_off_scan"          a datum point of a length is farther than
 //                             datum_tolerance_mm from every scan point (in a
-//                             scan hole, e.g. the crotch): its path starts at
-//                             the nearest scan point and a straight bridge
-//                             (up to max_bridge_mm) is added to the length
+//                             scan hole, e.g. the crotch)
+//   "bridged"                 part of a length crosses unscanned skin as a
+//                             straight bridge (bridged_mm; geodesic_paths.h:
+//                             into a hole up to max_bridge_mm, or across one
+//                             from its rim when shorter than over the scan)
 // Measurements whose landmarks are missing, or whose geodesic has no path
 // over the scan, are listed in `skipped` with the reason, never guessed.
 //
@@ -46,6 +48,7 @@
 #include "measure/cloud_geodesic/cloud_geodesics.h"
 #include "measure/landmarks/landmarks.h"
 #include "measure/measurements/section_girth.h"
+#include "measure/measurements/uncertainty.h"
 #include "scanners/core/progress.h"
 #include "scanners/core/types.h"
 
@@ -54,6 +57,7 @@ namespace bespoke {
 struct MeasureOptions {
   SectionGirthOptions section;      // girth sections (defaults in section_girth.h)
   CloudGeodesicsOptions geodesics;  // geodesic lengths (defaults in cloud_geodesics.h)
+  UncertaintyOptions uncertainty;   // uncertainty_mm (defaults in uncertainty.h)
   double datum_tolerance_mm = 20;   // default 20 mm: "datum_off_section" / "datum_off_scan"
   double max_bridge_mm = 80;   // default 80 mm: a datum point this far in a scan hole is bridged
   double arms_margin_mm = 30;  // default 30 mm: "section_includes_arms" beyond the datums' x
@@ -83,6 +87,11 @@ struct Measurement {
   Eigen::Vector3d plane_point = Eigen::Vector3d::Zero(), plane_normal = Eigen::Vector3d::Zero();
   double lowered_mm = 0;      // how far arms "lower" moved the plane
   double largest_gap_mm = 0;  // girths: widest hole bridged by the hull
+  // Geodesic lengths: how much of value_mm was bridged across unscanned
+  // skin (the crotch, an armpit) rather than measured over the scan.
+  double bridged_mm = 0;
+  // Half width of the 95 % interval around value_mm (uncertainty.h).
+  double uncertainty_mm = 0;
 };
 
 struct MeasureStage {

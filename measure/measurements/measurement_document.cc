@@ -20,6 +20,8 @@ nlohmann::json MeasurementJson(const Measurement& m, bool with_geometry) {
       {"name", m.name},   {"kind", ToString(m.kind)},     {"value_mm", Round2(m.value_mm)},
       {"flags", m.flags}, {"method", ToString(m.method)}, {"datum", m.datum}};
   if (!m.uncertain_landmarks.empty()) j["uncertain_landmarks"] = m.uncertain_landmarks;
+  j["uncertainty_mm"] = Round2(m.uncertainty_mm);
+  if (m.method == MeasurementMethod::kGeodesic) j["bridged_mm"] = Round2(m.bridged_mm);
   if (m.kind == MeasurementKind::kGirth) {
     j["largest_gap_mm"] = Round2(m.largest_gap_mm);
     j["lowered_mm"] = Round2(m.lowered_mm);

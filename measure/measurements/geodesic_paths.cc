@@ -1,0 +1,268 @@
+#include "measure/measurements/geodesic_paths.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <memory>
+#include <thread>
+#include <vector>
+
+#include "scanners/core/errors.h"
+
+namespace bespoke {
+namespace {
+
+using Vec = Eigen::Vector3d;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Whether the straight chord from p to x crosses unscanned skin: its points
+// at a quarter, half and three quarters lie farther than `off_mm` from every
+// scan point, and (with normals) along the surface from the nearest one
+// (within 30 deg of its tangent plane), as over a hole; a chord over a
+// hollow of scanned skin lies along the skin's normal and is no bridge.
+bool CrossesHole(const PointIndex& index, const Eigen::MatrixX3d& normals, const Vec& p,
+                 const Vec& x, double off_mm) {
+  if ((x - p).norm() < 3 * off_mm) return false;
+  for (double t : {0.25, 0.5, 0.75}) {
+    const Vec m = p + t * (x - p);
+    double d2 = 0;
+    const int q = index.Nearest(m, &d2);
+    if (d2 <= off_mm * off_mm) return false;
+    if (normals.rows() == index.size()) {
+      const Vec d = m - index.point(q);
+      if (std::abs(d.dot(normals.row(q).transpose())) > 0.5 * d.norm()) return false;
+    }
+  }
+  return true;
+}
+
+// The scan point p within max_bridge_mm of `datum` minimising
+// geodesic(from, p) + |p - datum| (with `must_cross`, only chords that cross
+// a hole); -1 when none. At most 256 candidates, evenly spread.
+int BestBridge(CloudGeodesics& geodesics, const Eigen::MatrixX3d& normals, const Vec& from,
+               const Vec& datum, const GeodesicPathOptions& o, bool must_cross, double* cost) {
+  const PointIndex& index = geodesics.grid().index();
+  std::vector<int> near;
+  std::vector<double> d2;
+  index.Knn(datum, 4096, &near, &d2);
+  std::vector<int> candidates;
+  std::vector<double> bridges;
+  for (size_t k = 0; k < near.size(); ++k) {
+    if (d2[k] > o.max_bridge_mm * o.max_bridge_mm) break;
+    if (must_cross && !CrossesHole(index, normals, index.point(near[k]), datum, o.off_surface_mm))
+      continue;
+    candidates.push_back(near[k]), bridges.push_back(std::sqrt(d2[k]));
+  }
+  const size_t step = candidates.size() / 256 + 1;
+  std::vector<int> some;
+  std::vector<double> some_bridges;
+  for (size_t k = 0; k < candidates.size(); k += step)
+    some.push_back(candidates[k]), some_bridges.push_back(bridges[k]);
+  *cost = kInf;
+  if (some.empty()) return -1;
+  const int best = geodesics.NearestOf(from, some, some_bridges, cost);
+  return best < 0 ? -1 : some[static_cast<size_t>(best)];
+}
+
+// The path `from` -> scan point `to` plus a straight bridge `to` -> `datum`.
+GeodesicPath Bridged(CloudGeodesics& geodesics, const Vec& from, int to_row, const Vec& datum) {
+  const Vec to = geodesics.grid().index().point(to_row);
+  const CloudGeodesicPath p = geodesics.Between(from, to);
+  GeodesicPath out;
+  out.bridged_mm = (datum - to).norm();
+  out.length_mm = p.length_mm + out.bridged_mm;
+  out.points.resize(p.points.rows() + 1, 3);
+  out.points << p.points, datum.transpose();
+  return out;
+}
+
+}  // namespace
+
+GeodesicPaths::End GeodesicPaths::Classify(const GeodesicPathOptions& o,
+                                           const CloudGeodesics& geodesics,
+                                           const Eigen::MatrixX3d& normals, const Vec& x) const {
+  const PointIndex& index = geodesics.grid().index();
+  double d2 = 0;
+  const int nearest = index.Nearest(x, &d2);
+  End end;
+  end.start = x;
+  if (nearest < 0) return end;
+  const double d = std::sqrt(d2);
+  if (d > o.tolerance_mm && d <= o.max_bridge_mm) {
+    end.start = index.point(nearest), end.bridge_mm = d, end.in_hole = true;
+    return end;
+  }
+  // A hole's rim: the scan around x lies on one side of it (the mean of the
+  // unit directions to the neighbours, in the tangent plane, is long).
+  std::vector<int> near;
+  std::vector<double> near_d2;
+  index.Knn(x, 96, &near, &near_d2);
+  const bool with_normals = normals.rows() == index.size();
+  const Vec n = with_normals ? Vec(normals.row(nearest).transpose()) : Vec::Zero();
+  Vec sum = Vec::Zero();
+  int count = 0;
+  for (size_t k = 0; k < near.size(); ++k) {
+    if (near_d2[k] > o.rim_radius_mm * o.rim_radius_mm || near_d2[k] < 1) continue;
+    Vec u = index.point(near[k]) - x;
+    u -= u.dot(n) * n;
+    if (u.norm() < 1e-9) continue;
+    sum += u.normalized(), ++count;
+  }
+  end.at_rim = count >= 8 && sum.norm() / count > o.rim_offset;
+  return end;
+}
+
+GeodesicPath GeodesicPaths::SolvePair(const GeodesicPathOptions& o, CloudGeodesics& geodesics,
+                                      const LandmarkSet& set, const std::string& source,
+                                      const std::pair<std::string, std::string>& pair) const {
+  const std::string& target = pair.first == source ? pair.second : pair.first;
+  GeodesicPath out;
+  try {
+    const End a = ends_.at(source), b = ends_.at(target);
+    const Vec& xa = set.points.at(source).position_mm;
+    const Vec& xb = set.points.at(target).position_mm;
+    bool reversed = false;  // out runs from target to source
+    if (a.in_hole && b.in_hole) {
+      const CloudGeodesicPath p = geodesics.Between(a.start, b.start);
+      out.bridged_mm = a.bridge_mm + b.bridge_mm;
+      out.length_mm = p.length_mm + out.bridged_mm;
+      out.points.resize(p.points.rows() + 2, 3);
+      out.points << xa.transpose(), p.points, xb.transpose();
+    } else if (a.in_hole || b.in_hole) {
+      // From the end on the scan, the best way into the hole.
+      const End& on = a.in_hole ? b : a;
+      const Vec& datum = a.in_hole ? xa : xb;
+      double cost = 0;
+      const int p = BestBridge(geodesics, normals_, on.start, datum, o, false, &cost);
+      const int exit = p >= 0 ? p : geodesics.grid().index().Nearest(datum);
+      out = Bridged(geodesics, on.start, exit, datum);
+      reversed = a.in_hole;
+    } else {
+      const CloudGeodesicPath path = geodesics.Between(a.start, b.start);
+      out.length_mm = path.length_mm;
+      out.points = path.points;
+      BridgeInto(o, geodesics, a.start, xb, &out);  // the source's propagation, shared
+    }
+    // Stored from pair.first to pair.second.
+    const bool forward = (pair.first == source) != reversed;
+    if (!forward) out.points = out.points.colwise().reverse().eval();
+  } catch (const InputError& e) {
+    out = GeodesicPath();
+    out.error = e.what();
+  }
+  return out;
+}
+
+void GeodesicPaths::BridgeInto(const GeodesicPathOptions& o, CloudGeodesics& geodesics,
+                               const Vec& from, const Vec& datum, GeodesicPath* path) const {
+  double cost = kInf;
+  const int p = BestBridge(geodesics, normals_, from, datum, o, true, &cost);
+  if (p < 0 || cost >= path->length_mm) return;
+  GeodesicPath bridged = Bridged(geodesics, from, p, datum);
+  if (bridged.length_mm < path->length_mm) *path = std::move(bridged);
+}
+
+void GeodesicPaths::Solve(const GeodesicPathOptions& o, CloudGeodesics& geodesics,
+                          const Eigen::MatrixX3d& normals, const LandmarkSet& set,
+                          Progress* progress) {
+  normals_ = normals;
+  for (const auto& pair : pending_)
+    for (const std::string& name : {pair.first, pair.second})
+      if (!ends_.count(name))
+        ends_[name] = Classify(o, geodesics, normals, set.points.at(name).position_mm);
+  ProgressBegin(progress, "geodesics", static_cast<std::int64_t>(pending_.size()));
+  // Plan: source groups, greedily (the landmark in most pending pairs
+  // first; one at or in a hole only when no other is left, since bridges are
+  // found from the other end's propagation).
+  std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>> groups;
+  while (!pending_.empty()) {
+    std::map<std::string, int> degree;
+    for (const auto& [a, b] : pending_)
+      for (const std::string& name : {a, b})
+        degree[name] += ends_.at(name).at_rim || ends_.at(name).in_hole ? 1 : 1000;
+    const std::string source =
+        std::max_element(degree.begin(), degree.end(), [](const auto& x, const auto& y) {
+          return x.second < y.second;
+        })->first;
+    groups.emplace_back(source, std::vector<std::pair<std::string, std::string>>());
+    for (auto it = pending_.begin(); it != pending_.end();) {
+      if (it->first != source && it->second != source) {
+        ++it;
+        continue;
+      }
+      groups.back().second.push_back(*it);
+      it = pending_.erase(it);
+    }
+  }
+  // Groups to workers (largest first, to the least loaded); worker 0 uses
+  // `geodesics`, the others build their own grid (CloudGeodesics keeps a
+  // per-object cache and is not thread-safe).
+  const int workers = std::max(1, std::min<int>(o.threads, static_cast<int>(groups.size())));
+  std::vector<std::vector<std::size_t>> assigned(static_cast<std::size_t>(workers));
+  std::vector<std::size_t> load(static_cast<std::size_t>(workers), 0);
+  std::vector<std::size_t> order(groups.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+    return groups[x].second.size() > groups[y].second.size();
+  });
+  for (std::size_t g : order) {
+    const auto w =
+        static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
+    assigned[w].push_back(g), load[w] += groups[g].second.size();
+  }
+  std::vector<std::map<std::pair<std::string, std::string>, GeodesicPath>> results(
+      static_cast<std::size_t>(workers));
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(workers));
+  auto work = [&](std::size_t w) {
+    try {
+      std::unique_ptr<CloudGeodesics> own;
+      if (w > 0)
+        own = std::make_unique<CloudGeodesics>(geodesics.options(),
+                                               geodesics.grid().index().points());
+      CloudGeodesics& g = w > 0 ? *own : geodesics;
+      // The pairs, then bridges into their sources at a hole, from the
+      // other ends (grouped so each propagation serves its pairs).
+      std::vector<std::pair<std::string, std::pair<std::string, std::string>>> reverse;
+      for (std::size_t k : assigned[w])
+        for (const auto& pair : groups[k].second) {
+          results[w][pair] = SolvePair(o, g, set, groups[k].first, pair);
+          const std::string& other = pair.first == groups[k].first ? pair.second : pair.first;
+          if (!ends_.at(groups[k].first).in_hole && !ends_.at(other).in_hole)
+            reverse.emplace_back(other, pair);
+        }
+      std::sort(reverse.begin(), reverse.end());
+      for (const auto& [from, pair] : reverse) {
+        GeodesicPath& path = results[w][pair];
+        if (!path.error.empty()) continue;
+        const std::string& into = pair.first == from ? pair.second : pair.first;
+        const bool first_is_into = pair.first == into;
+        if (first_is_into) path.points = path.points.colwise().reverse().eval();  // from -> into
+        try {
+          BridgeInto(o, g, set.points.at(from).position_mm, set.points.at(into).position_mm, &path);
+        } catch (const InputError&) {
+        }
+        if (first_is_into) path.points = path.points.colwise().reverse().eval();
+      }
+    } catch (...) {
+      errors[w] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t w = 1; w < static_cast<std::size_t>(workers); ++w) pool.emplace_back(work, w);
+  work(0);
+  for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  std::int64_t done = 0;
+  for (auto& r : results) done += static_cast<std::int64_t>(r.size()), solved_.merge(r);
+  ProgressUpdate(progress, done);
+  ProgressEnd(progress);
+}
+
+const GeodesicPath* GeodesicPaths::Get(const std::string& a, const std::string& b) const {
+  const auto it = solved_.find(std::minmax(a, b));
+  return it == solved_.end() ? nullptr : &it->second;
+}
+
+}  // namespace bespoke

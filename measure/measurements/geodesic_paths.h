@@ -1,0 +1,91 @@
+// Geodesic paths between pairs of datum points over one scan, for the
+// lengths of Measure (internal to measure/measurements; measure.h is the
+// interface).
+//
+// Pairs are solved from a shared start where possible (the landmark in most
+// pending pairs first), on two worker threads. A tape crosses the scan's
+// holes (the crotch and the armpits no sensor saw): where a datum point
+// lies in a hole (farther than tolerance_mm from every scan point, up to
+// max_bridge_mm) or at one (its nearest scan point lies on the rim of an
+// unscanned region), the path may end with a bridge from a scan point p to
+// the datum point, chosen to minimise geodesic(other end, p) + bridge; the
+// bridge is the circular arc meeting p's normal and the hidden skin's (the
+// mean normal around the datum point), not the straight chord, which cuts
+// inside a curved crease. At a hole's rim the chord must leave the surface
+// (cross the hole, not cut through skin) and the bridge is taken only when
+// shorter than the path over the scan. Each entry says how much of its
+// length was bridged.
+// Frame and units: the body frame, mm.
+#ifndef BESPOKE_MEASURE_MEASUREMENTS_GEODESIC_PATHS_H_
+#define BESPOKE_MEASURE_MEASUREMENTS_GEODESIC_PATHS_H_
+
+#include <Eigen/Core>
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+
+#include "measure/cloud_geodesic/cloud_geodesics.h"
+#include "measure/landmarks/landmarks.h"
+#include "scanners/core/progress.h"
+
+namespace bespoke {
+
+struct GeodesicPathOptions {
+  double tolerance_mm = 20;   // a datum point farther than this from the scan is in a hole
+  double max_bridge_mm = 80;  // the longest straight bridge into or across a hole
+  double rim_radius_mm = 25;  // neighbourhood that tells a hole's rim from open skin
+  double rim_offset = 0.45;   // a rim: the neighbours' mean unit direction is this long
+  double off_surface_mm = 4;  // a bridge crossing a hole stays this far from the scan
+  int threads = 2;            // worker threads (each beyond the first builds its own grid)
+};
+
+struct GeodesicPath {
+  double length_mm = 0;
+  double bridged_mm = 0;    // of length_mm, the straight bridges over unscanned skin
+  Eigen::MatrixX3d points;  // #K x 3, from the pair's first point to its second
+  std::string error;        // non-empty: no path over the scan
+};
+
+class GeodesicPaths {
+ public:
+  void Need(const std::string& a, const std::string& b) {
+    if (a != b) pending_.insert(std::minmax(a, b));
+  }
+  bool empty() const { return pending_.empty(); }
+  // `normals`: the cloud's outward unit normals (#P x 3, the points of
+  // `geodesics`), or 0 x 3: the rim test then uses the raw directions.
+  void Solve(const GeodesicPathOptions& options, CloudGeodesics& geodesics,
+             const Eigen::MatrixX3d& normals, const LandmarkSet& set, Progress* progress);
+  // The path from a to b (a == b: a single point); nullptr when not solved.
+  const GeodesicPath* Get(const std::string& a, const std::string& b) const;
+
+ private:
+  struct End {
+    Eigen::Vector3d start = Eigen::Vector3d::Zero();  // where the path starts on the scan
+    double bridge_mm = 0;  // in a hole: straight bridge from `start` to the datum point
+    bool in_hole = false;  // farther than tolerance_mm from the scan
+    bool at_rim = false;   // on the scan but at the rim of a hole
+  };
+  End Classify(const GeodesicPathOptions& o, const CloudGeodesics& geodesics,
+               const Eigen::MatrixX3d& normals, const Eigen::Vector3d& x) const;
+  GeodesicPath SolvePair(const GeodesicPathOptions& o, CloudGeodesics& geodesics,
+                         const LandmarkSet& set, const std::string& source,
+                         const std::pair<std::string, std::string>& pair) const;
+
+  // Replaces `path` (from `from` to `datum`) by the path from `from` to a
+  // scan point plus a bridge across a hole into `datum`, when one is shorter.
+  void BridgeInto(const GeodesicPathOptions& o, CloudGeodesics& geodesics,
+                  const Eigen::Vector3d& from, const Eigen::Vector3d& datum,
+                  GeodesicPath* path) const;
+
+  std::set<std::pair<std::string, std::string>> pending_;
+  std::map<std::pair<std::string, std::string>, GeodesicPath> solved_;
+  std::map<std::string, End> ends_;
+  Eigen::MatrixX3d normals_;  // the scan's normals, or 0 x 3
+  GeodesicPath self_;
+};
+
+}  // namespace bespoke
+
+#endif  // BESPOKE_MEASURE_MEASUREMENTS_GEODESIC_PATHS_H_

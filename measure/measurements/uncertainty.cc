@@ -1,0 +1,94 @@
+#include "measure/measurements/uncertainty.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <vector>
+
+#include "scanners/core/errors.h"
+
+namespace bespoke {
+namespace {
+
+// Typical 3-D error (mm, median) of each landmark kind on the oracle's
+// MakeHuman and parametric virtual scans (docs/measuring.md, "Uncertainty",
+// has the run); paired names without their side.
+const std::map<std::string, double>& TypicalError() {
+  static const std::map<std::string, double> table = {
+      {"crown", 3},         {"back_neck", 6},
+      {"front_neck", 5},    {"side_neck", 11},
+      {"shoulder", 8},      {"axilla_front", 13},
+      {"axilla_back", 15},  {"armpit", 10},
+      {"bust", 6},          {"under_bust", 14},
+      {"front_waist", 9},   {"back_waist", 17},
+      {"side_waist", 17},   {"middle_hip_front", 18},
+      {"hip_back", 11},     {"hip", 22},
+      {"crotch", 25},       {"upper_arm", 22},
+      {"elbow", 15},        {"wrist", 10},
+      {"thigh", 12},        {"knee", 14},
+      {"calf", 36},         {"ankle_inside", 10},
+      {"ankle_outside", 6},
+  };
+  return table;
+}
+
+std::string Kind(const std::string& name) {
+  for (const char* suffix : {"_right", "_left"}) {
+    const std::string s(suffix);
+    if (name.size() > s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0)
+      return name.substr(0, name.size() - s.size());
+  }
+  return name;
+}
+
+}  // namespace
+
+void UncertaintyOptions::Check() const {
+  if (!(scale > 0) || !(bridge_share >= 0) || !(noise_factor >= 0) || !(spacing_factor >= 0))
+    throw InputError("uncertainty: scale must be > 0 and the factors >= 0");
+}
+
+double LandmarkSigma(const std::string& name, const Landmark& landmark) {
+  if (std::find(landmark.flags.begin(), landmark.flags.end(), "override") != landmark.flags.end())
+    return 1.0;
+  const auto& table = TypicalError();
+  const auto it = table.find(Kind(name));
+  // The median of the 3-D distance of an isotropic Gaussian is 1.54 SDs per axis.
+  const double sd = (it == table.end() ? 20.0 : it->second) / 1.54;
+  double sigma = sd * 0.8 / std::max(landmark.confidence, 0.1);
+  if (!landmark.flags.empty()) sigma *= 2;
+  return sigma;
+}
+
+double ScanNoise(const PointIndex& index, double* spacing_mm, int samples) {
+  *spacing_mm = index.MedianSpacing();
+  const Eigen::Index n = index.size();
+  if (n < 32) return 0;
+  const Eigen::Index step = std::max<Eigen::Index>(1, n / samples);
+  std::vector<int> near;
+  std::vector<double> d2;
+  double sum = 0;
+  int count = 0;
+  for (Eigen::Index i = 0; i < n; i += step) {
+    index.Knn(index.point(i), 16, &near, &d2);
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (int k : near) mean += index.point(k);
+    mean /= static_cast<double>(near.size());
+    for (int k : near) cov += (index.point(k) - mean) * (index.point(k) - mean).transpose();
+    const double smallest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvalues()(0);
+    sum += std::max(smallest, 0.0) / static_cast<double>(near.size()), ++count;
+  }
+  return count > 0 ? std::sqrt(sum / count) : 0;
+}
+
+double Uncertainty95(const UncertaintyOptions& o, double landmark_sd_mm, double noise_mm,
+                     double spacing_mm, double bridged_mm) {
+  const double scan = o.noise_factor * noise_mm + o.spacing_factor * spacing_mm;
+  const double bridge = o.bridge_share * bridged_mm;
+  return 1.96 * o.scale *
+         std::sqrt(landmark_sd_mm * landmark_sd_mm + scan * scan + bridge * bridge);
+}
+
+}  // namespace bespoke
