@@ -142,7 +142,7 @@ GeodesicPath GeodesicPaths::SolvePair(const GeodesicPathOptions& o, CloudGeodesi
       const CloudGeodesicPath path = geodesics.Between(a.start, b.start);
       out.length_mm = path.length_mm;
       out.points = path.points;
-      BridgeInto(o, geodesics, a.start, xb, &out);  // the source's propagation, shared
+      if (b.at_rim) BridgeInto(o, geodesics, a.start, xb, &out);  // the source's propagation
     }
     // Stored from pair.first to pair.second.
     const bool forward = (pair.first == source) != reversed;
@@ -228,7 +228,8 @@ void GeodesicPaths::Solve(const GeodesicPathOptions& o, CloudGeodesics& geodesic
         for (const auto& pair : groups[k].second) {
           results[w][pair] = SolvePair(o, g, set, groups[k].first, pair);
           const std::string& other = pair.first == groups[k].first ? pair.second : pair.first;
-          if (!ends_.at(groups[k].first).in_hole && !ends_.at(other).in_hole)
+          if (!ends_.at(groups[k].first).in_hole && !ends_.at(other).in_hole &&
+              ends_.at(groups[k].first).at_rim)
             reverse.emplace_back(other, pair);
         }
       std::sort(reverse.begin(), reverse.end());
