@@ -84,8 +84,8 @@ struct ScanQuality {
   double noise_mm = 0, spacing_mm = 0;
 };
 
-double Sigma(const LandmarkSet& set, const std::string& name) {
-  return LandmarkSigma(name, set.points.at(name));
+double Sigma(const UncertaintyOptions& u, const LandmarkSet& set, const std::string& name) {
+  return LandmarkSigma(name, set.points.at(name), u.scale);
 }
 
 // SD (mm) of a girth from its datum points: the plane moved along its
@@ -97,10 +97,11 @@ double GirthSd(const MeasureOptions& o, const MeasurementDef& m, const PointClou
                const LandmarkSet& set, const Vec& point, const Vec& normal,
                const Eigen::MatrixX3d& anchors, double girth_mm) {
   double var = 0;
-  for (const std::string& name : m.datum) var += Sigma(set, name) * Sigma(set, name);
+  for (const std::string& name : m.datum)
+    var += Sigma(o.uncertainty, set, name) * Sigma(o.uncertainty, set, name);
   double sd = std::sqrt(var);
   if (m.plane == GirthPlane::kHorizontal) sd /= static_cast<double>(m.datum.size());
-  if (m.plane == GirthPlane::kPerpendicularToAxis) sd = Sigma(set, m.datum[0]);
+  if (m.plane == GirthPlane::kPerpendicularToAxis) sd = Sigma(o.uncertainty, set, m.datum[0]);
   const double probe = std::min(sd, 10.0);
   double change = 0;
   for (double sign : {-1.0, 1.0}) {
@@ -185,11 +186,11 @@ Vec StartDirection(const Eigen::MatrixX3d& path, double reach_mm = 20) {
 // SD (mm) of a geodesic chain from its datum points: each end moves the
 // length by its SD along the path; an inner point by its SD times the turn
 // of the path there (|direction in - direction out|).
-double ChainSd(const MeasurementDef& m, const LandmarkSet& set,
+double ChainSd(const MeasureOptions& o, const MeasurementDef& m, const LandmarkSet& set,
                const std::vector<Eigen::MatrixX3d>& pieces) {
   double var = 0;
   for (std::size_t i = 0; i < m.datum.size(); ++i) {
-    const double sigma = Sigma(set, m.datum[i]);
+    const double sigma = Sigma(o.uncertainty, set, m.datum[i]);
     double weight = 1;
     if (i > 0 && i + 1 < m.datum.size() && i < pieces.size()) {
       const Vec out = StartDirection(pieces[i]);
@@ -210,7 +211,7 @@ Measurement Length(const MeasureOptions& o, const MeasurementDef& m, const Landm
     const Vec b = Position(set, m.datum[1]);
     out.value_mm = (a - b).head<2>().norm();
     out.geometry = (Eigen::MatrixX3d(2, 3) << a.transpose(), b.transpose()).finished();
-    sd = std::hypot(Sigma(set, m.datum[0]), Sigma(set, m.datum[1]));
+    sd = std::hypot(Sigma(o.uncertainty, set, m.datum[0]), Sigma(o.uncertainty, set, m.datum[1]));
   } else if (m.method == MeasurementMethod::kPointToLine) {
     const Vec b = Position(set, m.datum[1]), c = Position(set, m.datum[2]);
     if (!((c - b).norm() > 0)) throw Skip{"the line's two points coincide"};
@@ -218,9 +219,10 @@ Measurement Length(const MeasureOptions& o, const MeasurementDef& m, const Landm
     const Vec foot = b + (a - b).dot(d) * d;
     out.value_mm = (a - foot).norm();
     out.geometry = (Eigen::MatrixX3d(2, 3) << a.transpose(), foot.transpose()).finished();
-    sd = std::sqrt(Sigma(set, m.datum[0]) * Sigma(set, m.datum[0]) +
-                   0.5 * (Sigma(set, m.datum[1]) * Sigma(set, m.datum[1]) +
-                          Sigma(set, m.datum[2]) * Sigma(set, m.datum[2])));
+    sd = std::sqrt(
+        Sigma(o.uncertainty, set, m.datum[0]) * Sigma(o.uncertainty, set, m.datum[0]) +
+        0.5 * (Sigma(o.uncertainty, set, m.datum[1]) * Sigma(o.uncertainty, set, m.datum[1]) +
+               Sigma(o.uncertainty, set, m.datum[2]) * Sigma(o.uncertainty, set, m.datum[2])));
   } else {
     std::vector<Eigen::MatrixX3d> pieces;
     for (std::size_t i = 0; i + 1 < m.datum.size(); ++i) {
@@ -229,10 +231,10 @@ Measurement Length(const MeasureOptions& o, const MeasurementDef& m, const Landm
       out.bridged_mm += path.bridged_mm;
       pieces.push_back(std::move(path.points));
     }
-    sd = ChainSd(m, set, pieces);
+    sd = ChainSd(o, m, set, pieces);
     const Vec last = Position(set, m.datum.back());
     if (m.to_floor) {
-      sd = std::hypot(sd, Sigma(set, m.datum.back()));
+      sd = std::hypot(sd, Sigma(o.uncertainty, set, m.datum.back()));
       out.value_mm += last.z();
       pieces.push_back(
           (Eigen::MatrixX3d(2, 3) << last.transpose(), last.x(), last.y(), 0.0).finished());
@@ -260,11 +262,11 @@ Measurement Height(const MeasureOptions& o, const MeasurementDef& m, const Landm
   const Vec a = Position(set, m.datum[0]);
   out.value_mm = a.z();
   Vec foot(a.x(), a.y(), 0.0);
-  double sd = Sigma(set, m.datum[0]);
+  double sd = Sigma(o.uncertainty, set, m.datum[0]);
   if (m.datum.size() == 2) {
     out.value_mm -= Position(set, m.datum[1]).z();
     foot.z() = Position(set, m.datum[1]).z();
-    sd = std::hypot(sd, Sigma(set, m.datum[1]));
+    sd = std::hypot(sd, Sigma(o.uncertainty, set, m.datum[1]));
   }
   out.uncertainty_mm = Uncertainty95(o.uncertainty, sd, scan.noise_mm, scan.spacing_mm, 0);
   if (o.keep_geometry)

@@ -49,7 +49,7 @@ void UncertaintyOptions::Check() const {
     throw InputError("uncertainty: scale must be > 0 and the factors >= 0");
 }
 
-double LandmarkSigma(const std::string& name, const Landmark& landmark) {
+double LandmarkSigma(const std::string& name, const Landmark& landmark, double scale) {
   if (std::find(landmark.flags.begin(), landmark.flags.end(), "override") != landmark.flags.end())
     return 1.0;
   const auto& table = TypicalError();
@@ -58,7 +58,7 @@ double LandmarkSigma(const std::string& name, const Landmark& landmark) {
   const double sd = (it == table.end() ? 20.0 : it->second) / 1.54;
   double sigma = sd * 0.8 / std::max(landmark.confidence, 0.1);
   if (!landmark.flags.empty()) sigma *= 2;
-  return sigma;
+  return scale * sigma;
 }
 
 double ScanNoise(const PointIndex& index, double* spacing_mm, int samples) {
@@ -87,8 +87,7 @@ double Uncertainty95(const UncertaintyOptions& o, double landmark_sd_mm, double 
                      double spacing_mm, double bridged_mm) {
   const double scan = o.noise_factor * noise_mm + o.spacing_factor * spacing_mm;
   const double bridge = o.bridge_share * bridged_mm;
-  return 1.96 * o.scale *
-         std::sqrt(landmark_sd_mm * landmark_sd_mm + scan * scan + bridge * bridge);
+  return 1.96 * std::sqrt(landmark_sd_mm * landmark_sd_mm + scan * scan + bridge * bridge);
 }
 
 }  // namespace bespoke
