@@ -8,11 +8,12 @@
 #include <queue>
 #include <unordered_map>
 
+#include "scanners/core/constants.h"
+
 namespace bespoke::landmarks {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kPi = 3.14159265358979323846;
 
 std::int64_t Key(int x, int y, int z) {
   const auto u = [](int v) { return static_cast<std::uint64_t>(v + (1 << 20)) & 0x1fffffu; };
