@@ -6,13 +6,12 @@
 #include <string>
 
 #include "measure/mesh_geodesic/window_chain.h"
+#include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
 
-namespace {
-constexpr double kInf = std::numeric_limits<double>::infinity();
-}  // namespace
+namespace {}  // namespace
 
 Propagation::Propagation(const PropagationOptions& options, const CloudGrid& grid,
                          const Eigen::Vector3d& source, int source_node)

@@ -13,8 +13,6 @@
 namespace bespoke::landmarks {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 std::int64_t Key(int x, int y, int z) {
   const auto u = [](int v) { return static_cast<std::uint64_t>(v + (1 << 20)) & 0x1fffffu; };
   return static_cast<std::int64_t>((u(x) << 42) | (u(y) << 21) | u(z));

@@ -7,11 +7,10 @@
 #include <utility>
 
 #include "measure/landmarks/landmark_slices.h"
+#include "scanners/core/constants.h"
 
 namespace bespoke::landmarks {
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The trunk's ring at 60 % of stature: the nodes of the slab 59-61 % whose
 // points lie in the piece spanning x = 0 (linked within 15 mm in x, y);

@@ -19,10 +19,9 @@
 #include "measure/landmarks/body_structure.h"
 #include "measure/landmarks/landmark_slices.h"
 #include "measure/landmarks/landmarks.h"
+#include "scanners/core/constants.h"
 
 namespace bespoke::landmarks {
-
-inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // What the armpit stage learnt about one arm (used by later stages).
 struct ArmInfo {

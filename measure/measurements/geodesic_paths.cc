@@ -8,13 +8,13 @@
 #include <thread>
 #include <vector>
 
+#include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
 namespace {
 
 using Vec = Eigen::Vector3d;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Whether the straight chord from p to x crosses unscanned skin: its points
 // at a quarter, half and three quarters lie farther than `off_mm` from every

@@ -7,12 +7,12 @@
 
 #include "measure/mesh_geodesic/path_projection.h"
 #include "measure/mesh_geodesic/window_chain.h"
+#include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
 
 namespace {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // True when every pair of consecutive samples has nearest vertices at most
 // three edges apart in the mesh graph: the flowed path does not jump between
 // parts of the surface that are close in space but apart over the surface

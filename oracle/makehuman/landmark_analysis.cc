@@ -8,13 +8,13 @@
 
 #include "measure/tape/convex_hull_2d.h"
 #include "oracle/truth/mesh_section.h"
+#include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
 namespace {
 
 using Vec = Eigen::Vector3d;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 class Analysis {
  public:

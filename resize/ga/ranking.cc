@@ -6,10 +6,10 @@
 #include <numeric>
 #include <pagmo/utils/multi_objective.hpp>
 
+#include "scanners/core/constants.h"
+
 namespace bespoke {
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // a < b with NaN above infinity, as pagmo orders it.
 bool Less(double a, double b) {

@@ -9,6 +9,7 @@
 namespace bespoke {
 
 inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
 // "No value" in tables and plots (missing measurements, undefined statistics).
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
