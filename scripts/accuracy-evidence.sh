@@ -31,6 +31,8 @@ for f in found/summary.csv found/landmarks.csv found/posture.csv found/report.js
   [ -f "$out/$f" ] || { echo "missing $out/$f" >&2; exit 1; }
 done
 
+# An awk prefix that maps each CSV file's header to column numbers: $c["name"].
+columns='FNR == 1 { delete c; for (i = 1; i <= NF; i++) c[$i] = i } '
 # A number from report.json (one key, any formatting).
 json_number() { grep -o "\"$2\": *[-0-9.e]*" "$1" | head -1 | sed 's/.*: *//'; }
 
@@ -48,10 +50,10 @@ tmp=$(mktemp)
   echo "    $truth_cmd -o truth-landmarks/"
   echo
   printf 'Headline (found datum points / true datum points). ISO 20685-1:'
-  awk -F, 'NR > 1 && $16 == "pass" { p++ } NR > 1 { n++ } END { printf " %d of %d pass", p, n }' \
-    "$out/found/summary.csv"
-  awk -F, 'NR > 1 && $16 == "pass" { p++ } NR > 1 { n++ } END { printf " / %d of %d;", p, n }' \
-    "$out/truth-landmarks/summary.csv"
+  awk -F, "$columns"'NR > 1 && $c["verdict"] == "pass" { p++ } NR > 1 { n++ }
+    END { printf " %d of %d pass", p, n }' "$out/found/summary.csv"
+  awk -F, "$columns"'NR > 1 && $c["verdict"] == "pass" { p++ } NR > 1 { n++ }
+    END { printf " / %d of %d;", p, n }' "$out/truth-landmarks/summary.csv"
   printf ' MAE of the large girths %.2f / %.2f mm; median landmark error %.2f mm.\n' \
     "$(json_number "$out/found/report.json" large_girth_mae_mm)" \
     "$(json_number "$out/truth-landmarks/report.json" large_girth_mae_mm)" \
@@ -64,17 +66,18 @@ tmp=$(mktemp)
   echo
   echo "| measurement | class | limit | n | bias | SD | 95 % CI | MAE | max \\|error\\| | verdict | gap | MAE, true datum points | verdict, true datum points |"
   echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
-  awk -F, '
+  awk -F, "$columns"'
     FNR == 1 { next }
-    NR == FNR { mae[$1] = $13; verdict[$1] = $16; next }
+    NR == FNR { mae[$1] = $c["mae_mm"]; verdict[$1] = $c["verdict"]; next }
     {
-      gap = ""
-      if ($16 == "fail") {
-        hi = $12 - $4; lo = -$4 - $11; g = (hi > lo ? hi : lo)
+      gap = ""; tol = $c["tolerance_mm"]
+      if ($c["verdict"] == "fail") {
+        hi = $c["ci_high_mm"] - tol; lo = -tol - $c["ci_low_mm"]; g = (hi > lo ? hi : lo)
         gap = sprintf("%.1f", g)
       }
       printf "| %s | %s | %s | %s | %.1f | %.1f | [%.1f, %.1f] | %.1f | %.1f | %s | %s | %s | %s |\n",
-        $1, $3, $4, $5, $9, $10, $11, $12, $13, $14, $16, gap,
+        $1, $c["iso_class"], tol, $c["n"], $c["bias_mm"], $c["sd_mm"], $c["ci_low_mm"],
+        $c["ci_high_mm"], $c["mae_mm"], $c["max_abs_mm"], $c["verdict"], gap,
         ($1 in mae ? sprintf("%.1f", mae[$1]) : ""), ($1 in verdict ? verdict[$1] : "")
     }' "$out/truth-landmarks/summary.csv" "$out/found/summary.csv"
   echo
@@ -85,8 +88,8 @@ tmp=$(mktemp)
   echo
   echo "| landmark | n | missing | median | mean | max |"
   echo "| --- | --- | --- | --- | --- | --- |"
-  awk -F, 'NR > 1 { printf "| %s | %s | %s | %.2f | %.2f | %.2f |\n", $1, $2, $3, $4, $5, $6 }' \
-    "$out/found/landmarks.csv"
+  awk -F, "$columns"'NR > 1 { printf "| %s | %s | %s | %.2f | %.2f | %.2f |\n", $1, $c["n"],
+    $c["missing"], $c["median_mm"], $c["mean_mm"], $c["max_mm"] }' "$out/found/landmarks.csv"
   echo
   echo "## Posture"
   echo
@@ -96,8 +99,9 @@ tmp=$(mktemp)
   echo
   echo "| length | A-pose | T-pose | T - A | truth A | truth T | verdict |"
   echo "| --- | --- | --- | --- | --- | --- | --- |"
-  awk -F, 'NR > 1 && $8 == 1 { printf "| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %s |\n",
-    $1, $3, $4, $5, $6, $7, $9 }' "$out/found/posture.csv"
+  awk -F, "$columns"'NR > 1 && $c["judged"] == 1 { printf "| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %s |\n",
+    $1, $c["measured_a_mm"], $c["measured_b_mm"], $c["difference_mm"], $c["truth_a_mm"],
+    $c["truth_b_mm"], $c["pass"] }' "$out/found/posture.csv"
 } > "$tmp"
 mkdir -p "$(dirname "$doc")"
 mv "$tmp" "$doc"
