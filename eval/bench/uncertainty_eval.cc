@@ -27,6 +27,7 @@
 
 #include "eval/accuracy/compare.h"
 #include "eval/bench/bench_main.h"
+#include "measure/catalogue/catalogue.h"
 #include "scanners/core/errors.h"
 #include "scanners/core/json_io.h"
 
@@ -38,13 +39,6 @@ double Quantile(std::vector<double> v, double q) {
   std::sort(v.begin(), v.end());
   return v[std::min(v.size() - 1,
                     static_cast<size_t>(q * static_cast<double>(v.size() - 1) + 0.5))];
-}
-
-std::string Kind(const std::string& name) {
-  for (const std::string s : {"_right", "_left"})
-    if (name.size() > s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0)
-      return name.substr(0, name.size() - s.size());
-  return name;
 }
 
 int Run(int argc, char** argv) {
@@ -82,7 +76,7 @@ int Run(int argc, char** argv) {
         all.push_back(r);
       }
       for (const LandmarkError& e : c.landmarks)
-        if (!e.missing) landmark[Kind(e.name)].push_back(e.error_mm);
+        if (!e.missing) landmark[UnsidedLandmarkName(e.name)].push_back(e.error_mm);
       ++subjects;
     }
   }

@@ -227,4 +227,12 @@ const MeasurementDef& Catalogue::Measurement(std::string_view name) const {
   return measurements_[it->second];
 }
 
+std::string UnsidedLandmarkName(const std::string& name) {
+  for (const std::string side : {"_right", "_left"})
+    if (name.size() > side.size() &&
+        name.compare(name.size() - side.size(), side.size(), side) == 0)
+      return name.substr(0, name.size() - side.size());
+  return name;
+}
+
 }  // namespace bespoke

@@ -100,6 +100,10 @@ class Catalogue {
 // The catalogue file's text as embedded at build time.
 const char* BuiltinCatalogueJson();
 
+// A landmark's name without its side: "shoulder_right" -> "shoulder"; a name
+// without a "_left" or "_right" suffix comes back unchanged.
+std::string UnsidedLandmarkName(const std::string& name);
+
 }  // namespace bespoke
 
 #endif  // BESPOKE_MEASURE_CATALOGUE_CATALOGUE_H_

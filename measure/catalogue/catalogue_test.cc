@@ -16,6 +16,14 @@ namespace {
 
 using nlohmann::json;
 
+TEST(Catalogue, UnsidedLandmarkNameDropsOnlyTheSideSuffix) {
+  EXPECT_EQ(UnsidedLandmarkName("shoulder_right"), "shoulder");
+  EXPECT_EQ(UnsidedLandmarkName("ankle_inside_left"), "ankle_inside");
+  EXPECT_EQ(UnsidedLandmarkName("crotch"), "crotch");
+  EXPECT_EQ(UnsidedLandmarkName("_left"), "_left");  // nothing would be left
+  EXPECT_EQ(UnsidedLandmarkName("left_hand"), "left_hand");
+}
+
 TEST(Catalogue, BuiltinParsesWithEnoughEntries) {
   const Catalogue& c = Catalogue::Builtin();
   EXPECT_GE(c.measurements().size(), 40u);

@@ -6,6 +6,7 @@
 #include <map>
 #include <vector>
 
+#include "measure/catalogue/catalogue.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
@@ -33,15 +34,6 @@ const std::map<std::string, double>& TypicalError() {
   return table;
 }
 
-std::string Kind(const std::string& name) {
-  for (const char* suffix : {"_right", "_left"}) {
-    const std::string s(suffix);
-    if (name.size() > s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0)
-      return name.substr(0, name.size() - s.size());
-  }
-  return name;
-}
-
 }  // namespace
 
 void UncertaintyOptions::Check() const {
@@ -53,7 +45,7 @@ double LandmarkSigma(const std::string& name, const Landmark& landmark, double s
   if (std::find(landmark.flags.begin(), landmark.flags.end(), "override") != landmark.flags.end())
     return 1.0;
   const auto& table = TypicalError();
-  const auto it = table.find(Kind(name));
+  const auto it = table.find(UnsidedLandmarkName(name));
   // The median of the 3-D distance of an isotropic Gaussian is 1.54 SDs per axis.
   const double sd = (it == table.end() ? 20.0 : it->second) / 1.54;
   double sigma = sd * 0.8 / std::max(landmark.confidence, 0.1);
