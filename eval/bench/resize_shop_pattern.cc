@@ -15,11 +15,12 @@
 // the fit against the base: largest kink on a straight run, level-line and
 // fold tilt, square-corner change, dart legs, notch shift from its fraction
 // of its run), then the sleeve cap heights and armhole depths (base,
-// grading, graded start, fit), and exits 1 when a piece is farther from the
-// draft than grading (by more than 0.05 mm, the measuring noise for pieces
-// the draft leaves unchanged), a kink exceeds 1 mm, a level, fold or grain
-// line tilts more than 0.5 deg, a notch shifts more than 1 mm or a curve
-// gains an inflection.
+// grading, graded start, fit; the draft's cap height found from its shape
+// on the base cap's side, design_points.h InferredCapHeight), and exits 1
+// when a piece is farther from the draft than grading (by more than 0.05
+// mm, the measuring noise for pieces the draft leaves unchanged), a kink
+// exceeds 1 mm, a level, fold or grain line tilts more than 0.5 deg, a notch
+// shifts more than 1 mm or a curve gains an inflection.
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -35,6 +36,7 @@
 #include "resize/io/pattern_io.h"
 #include "resize/io/pattern_json.h"
 #include "resize/io/pattern_overlay.h"
+#include "resize/pattern/design_points.h"
 #include "scanners/core/atomic_file.h"
 #include "scanners/core/errors.h"
 
@@ -49,6 +51,12 @@ bespoke::OverlayLayer Layer(const char* label, const bespoke::Pattern* pattern,
   layer.line_px = line_px;
   layer.dashed = dashed;
   return layer;
+}
+
+std::string Format(const char* format, double v) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), format, v);
+  return buffer;
 }
 
 int Run(int argc, char** argv) {
@@ -129,11 +137,22 @@ int Run(int argc, char** argv) {
         s.max_notch_shift_mm, s.new_inflections, ok ? "" : " **miss**");
   }
   std::printf(
-      "\n| piece | dimension | base mm | grading mm | graded start mm | fit mm |\n"
-      "|---|---|---|---|---|---|\n");
-  for (const DesignDimensionFigures& d : DesignDimensionChanges(base, r))
-    std::printf("| %s | %s | %.1f | %.1f | %.1f | %.1f |\n", d.piece.c_str(), d.name.c_str(),
-                d.base_mm, d.grading_mm, d.graded_mm, d.fit_mm);
+      "\n| piece | dimension | base mm | grading mm | graded start mm | fit mm | draft mm |\n"
+      "|---|---|---|---|---|---|---|\n");
+  const std::vector<DesignDimension> found = FindDesignDimensions(base);
+  const std::vector<DesignDimensionFigures> figures = DesignDimensionChanges(base, r);
+  for (size_t i = 0; i < figures.size(); ++i) {
+    const DesignDimensionFigures& d = figures[i];
+    // The draft has no landmarks: its cap is found from its shape, on the
+    // side the base's cap is.
+    const int k = draft.FindPiece(d.piece);
+    const std::string drafted =
+        found[i].kind == DesignDimension::Kind::kCapHeight && k >= 0
+            ? Format("%.1f", InferredCapHeight(draft.pieces[k], CapDirection(base, found[i])))
+            : std::string("-");
+    std::printf("| %s | %s | %.1f | %.1f | %.1f | %.1f | %s |\n", d.piece.c_str(), d.name.c_str(),
+                d.base_mm, d.grading_mm, d.graded_mm, d.fit_mm, drafted.c_str());
+  }
   std::printf(
       "\nworst binding %.3f mm, worst seam %.3f mm, structure rules %.3f mm, time GA %.2f s + "
       "polish %.2f s\n",

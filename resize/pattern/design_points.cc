@@ -151,6 +151,33 @@ double MeasureDesignDimension(const Pattern& pattern, const DesignDimension& d) 
   return hi - lo;
 }
 
+Eigen::Vector2d CapDirection(const Pattern& pattern, const DesignDimension& cap) {
+  const Outline& o = pattern.pieces[pattern.FindPiece(cap.piece)].outline;
+  const Eigen::Vector2d a = o.row(cap.vertices.front()), b = o.row(cap.vertices.back());
+  const Eigen::Vector2d normal = Eigen::Vector2d(a.y() - b.y(), b.x() - a.x()).normalized();
+  double best = 0;
+  for (int v : cap.vertices) {
+    const double h = normal.dot(Eigen::Vector2d(o.row(v)) - a);
+    if (std::abs(h) > std::abs(best)) best = h;
+  }
+  return best < 0 ? Eigen::Vector2d(-normal) : normal;
+}
+
+double InferredCapHeight(const Piece& sleeve, const Eigen::Vector2d& up) {
+  const Eigen::Vector2d across(up.y(), -up.x());
+  Eigen::Index a = 0, b = 0;
+  const Eigen::VectorXd along = sleeve.outline * across;
+  along.minCoeff(&a);
+  along.maxCoeff(&b);
+  const Eigen::Vector2d pa = sleeve.outline.row(a), pb = sleeve.outline.row(b);
+  Eigen::Vector2d normal = Eigen::Vector2d(pa.y() - pb.y(), pb.x() - pa.x()).normalized();
+  if (normal.dot(up) < 0) normal = -normal;
+  double height = 0;
+  for (Eigen::Index v = 0; v < sleeve.outline.rows(); ++v)
+    height = std::max(height, normal.dot(Eigen::Vector2d(sleeve.outline.row(v)) - pa));
+  return height;
+}
+
 std::string DesignDimensionName(DesignDimension::Kind kind) {
   return kind == DesignDimension::Kind::kCapHeight ? "cap_height" : "armhole_depth";
 }

@@ -69,6 +69,17 @@ std::vector<DesignDimension> FindDesignDimensions(const Pattern& pattern);
 // it was found on), mm.
 double MeasureDesignDimension(const Pattern& pattern, const DesignDimension& dimension);
 
+// The direction from the middle of the underarm line to the cap top of a
+// kCapHeight dimension on `pattern` (unit).
+Eigen::Vector2d CapDirection(const Pattern& pattern, const DesignDimension& cap);
+
+// The cap height of a sleeve that carries no landmarks (another system's
+// draft of it) whose cap lies towards `up` (CapDirection of the same sleeve
+// where its points are named): its underarm points are its two extreme
+// vertices across `up`, the height the largest distance of a vertex from
+// the line between them on the `up` side, mm.
+double InferredCapHeight(const Piece& sleeve, const Eigen::Vector2d& up);
+
 // "cap_height" or "armhole_depth".
 std::string DesignDimensionName(DesignDimension::Kind kind);
 

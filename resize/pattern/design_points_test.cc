@@ -101,6 +101,20 @@ TEST(DesignPoints, CapHeightAndArmholeDepthOfAKnownSleeve) {
   }
 }
 
+TEST(DesignPoints, CapHeightInferredFromTheShapeAlone) {
+  for (double rotate_deg : {0.0, 30.0}) {
+    const Pattern named = SleeveAndBodice(rotate_deg);
+    const Eigen::Vector2d up = CapDirection(named, FindDesignDimensions(named)[0]);
+    const double a = rotate_deg * M_PI / 180;
+    EXPECT_NEAR(up.x(), -std::sin(a), 1e-9);
+    EXPECT_NEAR(up.y(), std::cos(a), 1e-9);
+    Piece sleeve = named.pieces[0];
+    sleeve.landmarks.clear();
+    EXPECT_NEAR(InferredCapHeight(sleeve, up), 150, 1e-9) << rotate_deg;
+    EXPECT_NEAR(InferredCapHeight(sleeve, -up), 500, 1e-9) << rotate_deg;  // the arm side
+  }
+}
+
 TEST(DesignPoints, NamedCapTopChoosesTheCapRun) {
   // A sleeve whose cap (300 mm high) bulges more than its 200 mm long
   // arm part: only the named cap top tells them apart.
