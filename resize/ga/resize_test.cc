@@ -156,6 +156,48 @@ TEST(Resize, NotchKeepsItsFractionWhenStretchedUnevenly) {
   EXPECT_GT(std::abs(NotchShift(q.fitted.pieces[0].outline, runs[0])), 20.0);
 }
 
+TEST(Resize, NotchesMatchedAcrossASeamStayMatched) {
+  // A band sewn onto the panel's curved top edge (the same 31 points, so
+  // stitch i pairs equal points), with the matching notch at x = 200: the
+  // panel's left half doubles, the band follows only through the seam.
+  Pattern p = NotchedPanel();
+  Piece band;
+  band.name = "band";
+  band.outline.resize(33, 2);
+  for (int k = 0; k <= 30; ++k) band.outline.row(k) = p.pieces[0].outline.row(33 - k);
+  band.outline.row(31) << 300, 200;
+  band.outline.row(32) << 0, 200;
+  band.landmarks = {{"bl", "", 0, {}}, {"br", "", 30, {}}, {"tr", "", 31, {}}, {"tl", "", 32, {}}};
+  band.critical = {0, 20, 30, 31, 32};
+  band.notches = {20};
+  band.has_grain = true;
+  band.grain_start = {150, 150};
+  band.grain_end = {150, 190};
+  p.pieces.push_back(band);
+  Seam seam;
+  seam.name = "top";
+  seam.a = {"panel", 3, 33, true};
+  seam.b = {"band", 30, 0, false};
+  p.seams = {seam};
+  ResizeOptions o = Small();
+  o.generations = 0;
+  const ResizeResult r = ResizePattern(o, p, {{"chest_girth", 200}}, nullptr);
+  EXPECT_LT(std::abs(r.seam_mismatch_mm[0]), 0.1);
+  const Outline &a = r.fitted.pieces[0].outline, &b = r.fitted.pieces[1].outline;
+  // Along the seam from its start (the panel's top right, the band's
+  // bottom right) to each notch: the same length.
+  const double to_a = OutlineDistance(a, 3, 13), to_b = OutlineDistance(b, 30, 20, false);
+  EXPECT_GT(to_a, 100 + 30);  // the seam really changed (100 mm in the base)
+  EXPECT_NEAR(to_a, to_b, 0.1);
+  // Without the notches the two places part (85 and 134 mm when written).
+  Pattern plain = p;
+  for (Piece& piece : plain.pieces) piece.notches.clear();
+  const ResizeResult q = ResizePattern(o, plain, {{"chest_girth", 200}}, nullptr);
+  EXPECT_GT(std::abs(OutlineDistance(q.fitted.pieces[0].outline, 3, 13) -
+                     OutlineDistance(q.fitted.pieces[1].outline, 30, 20, false)),
+            20.0);
+}
+
 TEST(Resize, PolishAndGraderOptionsRejectBadValues) {
   PolishOptions o;
   o.energy.shear_weight = -1;
