@@ -80,8 +80,9 @@ int Run(int argc, char** argv) {
   std::printf(
       "| design | body | worst binding mm | worst seam mm | simple | shape deg (draft's) | "
       "fit-draft mean/max mm | graded-draft mean mm | grading-draft mean/max mm | "
-      "grading worst binding mm | kink mm | tilt deg | new inflections | polish from | s |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "grading worst binding mm | kink mm | tilt deg | notch mm | cap fit/graded/draft mm | "
+      "new inflections | polish from | s |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const std::string& design : DesignNames()) {
     if (which != "both" && which != design) continue;
     for (int b = 0; b < count; ++b) {
@@ -116,12 +117,13 @@ int Run(int argc, char** argv) {
       sum_grading += e.grading_to_draft.mean_mm;
       std::printf(
           "| %s | %s | %.3f | %.3f | %s | %.3f (%.3f) | %.1f / %.1f | %.1f | %.1f / %.1f | %.1f | "
-          "%.3f | %.3f | %d | %s | %.2f |%s\n",
+          "%.3f | %.3f | %.3f | %.1f / %.1f / %.1f | %d | %s | %.2f |%s\n",
           design.c_str(), name.c_str(), e.max_binding_error_mm, e.max_seam_mismatch_mm,
           e.outlines_simple ? "yes" : "NO", e.shape_deg, e.draft_shape_deg, e.ga_to_draft.mean_mm,
           e.ga_to_draft.max_mm, e.graded_to_draft.mean_mm, e.grading_to_draft.mean_mm,
           e.grading_to_draft.max_mm, e.grading_max_binding_error_mm, e.max_kink_mm, e.max_tilt_deg,
-          e.new_inflections, e.polish_start.c_str(), e.time_s, ok ? "" : " **miss**");
+          e.max_notch_shift_mm, e.cap_fit_mm, e.cap_graded_mm, e.cap_draft_mm, e.new_inflections,
+          e.polish_start.c_str(), e.time_s, ok ? "" : " **miss**");
       std::fflush(stdout);
     }
   }

@@ -13,10 +13,14 @@
 //
 // Prints one row per piece (distances to the draft; structure figures of
 // the fit against the base: largest kink on a straight run, level-line and
-// fold tilt, square-corner change, dart legs) and exits 1 when a piece is
-// farther from the draft than grading (by more than 0.05 mm, the measuring
-// noise for pieces the draft leaves unchanged), a kink exceeds 1 mm, a level,
-// fold or grain line tilts more than 0.5 deg or a curve gains an inflection.
+// fold tilt, square-corner change, dart legs, notch shift from its fraction
+// of its run), then the sleeve cap heights and armhole depths (base,
+// grading, graded start, fit; the draft's cap height found from its shape
+// on the base cap's side, design_points.h InferredCapHeight), and exits 1
+// when a piece is farther from the draft than grading (by more than 0.05
+// mm, the measuring noise for pieces the draft leaves unchanged), a kink
+// exceeds 1 mm, a level, fold or grain line tilts more than 0.5 deg, a notch
+// shifts more than 1 mm or a curve gains an inflection.
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -32,6 +36,7 @@
 #include "resize/io/pattern_io.h"
 #include "resize/io/pattern_json.h"
 #include "resize/io/pattern_overlay.h"
+#include "resize/pattern/design_points.h"
 #include "scanners/core/atomic_file.h"
 #include "scanners/core/errors.h"
 
@@ -46,6 +51,12 @@ bespoke::OverlayLayer Layer(const char* label, const bespoke::Pattern* pattern,
   layer.line_px = line_px;
   layer.dashed = dashed;
   return layer;
+}
+
+std::string Format(const char* format, double v) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), format, v);
+  return buffer;
 }
 
 int Run(int argc, char** argv) {
@@ -93,7 +104,7 @@ int Run(int argc, char** argv) {
   std::printf(
       "| piece | fit-draft mean/max mm | grading-draft mean/max mm | graded start-draft mean mm | "
       "fit / grading | kink mm | level tilt deg | fold tilt deg | corner deg | dart mm | "
-      "new inflections |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "notch mm | new inflections |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   int failures = 0;
   double fit_sum = 0, grading_sum = 0;
   OverlayLayer draft_layer = Layer("draft for the body (aligned)", &draft, {0.1, 0.6, 0.1}, 2.5);
@@ -113,17 +124,34 @@ int Run(int argc, char** argv) {
     const bool ok =
         fit.mean_mm <= grading.mean_mm + 0.05 && s.max_kink_mm <= 1 &&
         std::max({s.max_level_tilt_deg, s.max_fold_tilt_deg, s.max_grain_tilt_deg}) <= 0.5 &&
-        s.new_inflections == 0;
+        s.max_notch_shift_mm <= 1 && s.new_inflections == 0;
     failures += ok ? 0 : 1;
     fit_sum += fit.mean_mm;
     grading_sum += grading.mean_mm;
     std::printf(
-        "| %s | %.1f / %.1f | %.1f / %.1f | %.1f | %.2f | %.3f | %.3f | %.3f | %.3f | %.3f | %d "
-        "|%s\n",
+        "| %s | %.1f / %.1f | %.1f / %.1f | %.1f | %.2f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f "
+        "| %d |%s\n",
         base.pieces[p].name.c_str(), fit.mean_mm, fit.max_mm, grading.mean_mm, grading.max_mm,
         graded.mean_mm, fit.mean_mm / std::max(grading.mean_mm, 1e-9), s.max_kink_mm,
         s.max_level_tilt_deg, s.max_fold_tilt_deg, s.max_corner_change_deg, s.max_dart_mismatch_mm,
-        s.new_inflections, ok ? "" : " **miss**");
+        s.max_notch_shift_mm, s.new_inflections, ok ? "" : " **miss**");
+  }
+  std::printf(
+      "\n| piece | dimension | base mm | grading mm | graded start mm | fit mm | draft mm |\n"
+      "|---|---|---|---|---|---|---|\n");
+  const std::vector<DesignDimension> found = FindDesignDimensions(base);
+  const std::vector<DesignDimensionFigures> figures = DesignDimensionChanges(base, r);
+  for (size_t i = 0; i < figures.size(); ++i) {
+    const DesignDimensionFigures& d = figures[i];
+    // The draft has no landmarks: its cap is found from its shape, on the
+    // side the base's cap is.
+    const int k = draft.FindPiece(d.piece);
+    const std::string drafted =
+        found[i].kind == DesignDimension::Kind::kCapHeight && k >= 0
+            ? Format("%.1f", InferredCapHeight(draft.pieces[k], CapDirection(base, found[i])))
+            : std::string("-");
+    std::printf("| %s | %s | %.1f | %.1f | %.1f | %.1f | %s |\n", d.piece.c_str(), d.name.c_str(),
+                d.base_mm, d.grading_mm, d.graded_mm, d.fit_mm, drafted.c_str());
   }
   std::printf(
       "\nworst binding %.3f mm, worst seam %.3f mm, structure rules %.3f mm, time GA %.2f s + "

@@ -8,6 +8,7 @@
 #include "resize/designs/designs.h"
 #include "resize/ga/grading.h"
 #include "resize/ga/report.h"
+#include "resize/pattern/design_points.h"
 #include "resize/pattern/geometry.h"
 #include "scanners/core/errors.h"
 
@@ -112,7 +113,7 @@ PatternDistance CompareOutlineShapes(const Outline& a, const Outline& b_in, doub
 bool FitEvidence::Passes() const {
   return max_binding_error_mm <= 1 && max_seam_mismatch_mm <= 1 && outlines_simple &&
          ga_to_draft.mean_mm < grading_to_draft.mean_mm && max_kink_mm <= 1 &&
-         max_tilt_deg <= 0.5 && new_inflections == 0;
+         max_tilt_deg <= 0.5 && max_notch_shift_mm <= 1 && new_inflections == 0;
 }
 
 FitEvidence EvaluateFit(const ResizeOptions& options, const std::string& design,
@@ -148,8 +149,16 @@ FitEvidence EvaluateFit(const ResizeOptions& options, const std::string& design,
     e.max_kink_mm = std::max(e.max_kink_mm, s.max_kink_mm);
     e.max_tilt_deg =
         std::max({e.max_tilt_deg, s.max_level_tilt_deg, s.max_fold_tilt_deg, s.max_grain_tilt_deg});
+    e.max_notch_shift_mm = std::max(e.max_notch_shift_mm, s.max_notch_shift_mm);
     e.new_inflections += s.new_inflections;
   }
+  for (const DesignDimension& d : FindDesignDimensions(base))
+    if (d.kind == DesignDimension::Kind::kCapHeight) {
+      e.cap_fit_mm = MeasureDesignDimension(r.fitted, d);
+      e.cap_graded_mm = MeasureDesignDimension(r.graded, d);
+      e.cap_draft_mm = MeasureDesignDimension(direct, d);
+      break;
+    }
   for (size_t b = 0; b < base.bindings.size(); ++b)
     e.grading_max_binding_error_mm =
         std::max(e.grading_max_binding_error_mm,

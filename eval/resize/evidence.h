@@ -46,15 +46,20 @@ struct FitEvidence {
   double grading_max_binding_error_mm = 0;
   // Structure of the fit against the base (report.h StructureChanges), worst
   // over the pieces: kink on a straight run (mm), tilt of a level line, fold
-  // or grain line (deg), and the new inflections summed over the pieces.
+  // or grain line (deg), a notch's shift from its fraction of its run (mm),
+  // and the new inflections summed over the pieces.
   double max_kink_mm = 0;
   double max_tilt_deg = 0;
+  double max_notch_shift_mm = 0;
   int new_inflections = 0;
+  // The first sleeve's cap height (design_points.h) on the fit, the graded
+  // start and the direct draft (mm); 0 for a design without a sleeve.
+  double cap_fit_mm = 0, cap_graded_mm = 0, cap_draft_mm = 0;
   double time_s = 0;         // GA + polish
   std::string polish_start;  // "ga" or "graded" (ResizeResult::polish_start)
   // Every check of the evidence run met: bindings and seams within 1 mm,
   // simple outlines, closer to the draft than grading, no kink > 1 mm, no
-  // tilt > 0.5 deg, no new inflection.
+  // tilt > 0.5 deg, no notch shift > 1 mm, no new inflection.
   bool Passes() const;
 };
 

@@ -56,6 +56,13 @@ double PathLength(const Outline& o, const std::vector<int>& path, double scale, 
   return length;
 }
 
+double ChainLength(const Outline& o, const std::vector<int>& path) {
+  double length = 0;
+  for (size_t k = 0; k + 1 < path.size(); ++k)
+    length += (o.row(path[k + 1]) - o.row(path[k])).norm();
+  return length;
+}
+
 }  // namespace
 
 void FitnessModel::Structure(const Eigen::VectorXd& genes, const std::vector<Outline>& outlines,
@@ -83,6 +90,9 @@ void FitnessModel::Structure(const Eigen::VectorXd& genes, const std::vector<Out
     const Eigen::Vector2d d = o.row(l.b) - o.row(l.a), q = o.row(l.v) - o.row(l.a);
     out->push_back((d.x() * q.y() - d.y() * q.x()) / std::max(d.norm(), 1e-12));
   }
+  for (const NotchData& d : notches_)
+    out->push_back((1 - d.fraction) * ChainLength(outlines[d.piece], d.before) -
+                   d.fraction * ChainLength(outlines[d.piece], d.after));
 }
 
 void FitnessModel::Constraints(const Eigen::VectorXd& genes, Eigen::VectorXd* constraints,
@@ -162,6 +172,14 @@ void FitnessModel::Constraints(const Eigen::VectorXd& genes, Eigen::VectorXd* co
     w.Add(stencils_[l.piece][l.v], gq);
     w.Add(stencils_[l.piece][l.b], gd);
     w.Add(stencils_[l.piece][l.a], -gd - gq);
+  }
+  for (const NotchData& d : notches_) {
+    w.Row(static_cast<int>(c.size()));
+    const double before =
+        PathLength(outlines[d.piece], d.before, 1 - d.fraction, &w, stencil_of(d.piece));
+    const double after =
+        PathLength(outlines[d.piece], d.after, -d.fraction, &w, stencil_of(d.piece));
+    c.push_back((1 - d.fraction) * before - d.fraction * after);
   }
   *constraints = Eigen::Map<Eigen::VectorXd>(c.data(), static_cast<Eigen::Index>(c.size()));
   if (jacobian) {

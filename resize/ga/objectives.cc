@@ -1,7 +1,9 @@
 #include "resize/ga/objectives.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include "resize/pattern/design_points.h"
 #include "resize/pattern/geometry.h"
 
 namespace bespoke {
@@ -103,6 +105,7 @@ FitnessModel::FitnessModel(const Pattern& base, const BlockSet& blocks, const Me
     for (const StraightRun& r : KeptStraightRuns(piece))
       for (int v = (r.from + 1) % n; v != r.to; v = (v + 1) % n)
         if (critical[v]) collinear_.push_back({k, r.from, r.to, v});
+    AddNotches(k);
     std::vector<bool> on_run(n, false);  // the design's straight runs, ends included
     for (const StraightRun& r : piece.straight)
       for (int v = r.from;; v = (v + 1) % n) {
@@ -168,6 +171,24 @@ FitnessModel::FitnessModel(const Pattern& base, const BlockSet& blocks, const Me
     for (size_t k = 1; k + 1 < d.a.size(); ++k)
       d.angle_base.push_back(WrapAngle(Turning(oa, d.a, k) - Turning(ob, d.b, k)));
     seams_.push_back(std::move(d));
+  }
+}
+
+void FitnessModel::AddNotches(int piece) {
+  const int n = base_.pieces[piece].num_vertices();
+  for (const NotchRun& r : NotchRuns(base_, piece)) {
+    // Inside one run EvalOutline keeps straight, the notch's fraction is fixed.
+    bool held = false;
+    for (const BlockRun& s : blocks_.blocks[piece].straight) {
+      const std::vector<int> run = ForwardRun(s.from, s.to, n);
+      const int a = static_cast<int>(std::find(run.begin(), run.end(), r.from) - run.begin());
+      const int b = static_cast<int>(std::find(run.begin(), run.end(), r.to) - run.begin());
+      held =
+          held || (a < static_cast<int>(run.size()) && b < static_cast<int>(run.size()) && a < b);
+    }
+    if (!held)
+      notches_.push_back(
+          {piece, ForwardRun(r.from, r.notch, n), ForwardRun(r.notch, r.to, n), r.fraction});
   }
 }
 
@@ -298,7 +319,8 @@ Objectives FitnessModel::Evaluate(const Eigen::VectorXd& genes, bool check_simpl
   }
   o.shape_deg /= std::max(vertices, 1);
   o.critical_shape_deg /= std::max(critical, 1);
-  if (!directions_.empty() || !corners_.empty() || !darts_.empty() || !collinear_.empty()) {
+  if (!directions_.empty() || !corners_.empty() || !darts_.empty() || !collinear_.empty() ||
+      !notches_.empty()) {
     thread_local std::vector<double> rules;
     rules.clear();
     Structure(genes, outlines, &rules);

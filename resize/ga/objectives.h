@@ -59,10 +59,13 @@ class FitnessModel {
   // seam's total length mismatch, then the structure rules: a fold's, level
   // line's or grain line's far end off its base direction (the sideways
   // offset), a square corner's turning change x 100 mm/rad, a dart's
-  // leg-length difference, and a straight run's critical inner vertex's
+  // leg-length difference, a straight run's critical inner vertex's
   // distance from the run's chord (between critical vertices EvalOutline
-  // keeps runs straight). With `jacobian`, also d constraints / d genes
-  // (#c x #genes).
+  // keeps runs straight), and a notch's shift along the outline from its
+  // base fraction between the structure points that bound it
+  // (design_points.h NotchRun; notches a straight run already holds at
+  // their fraction are left out). With `jacobian`, also d constraints /
+  // d genes (#c x #genes).
   void Constraints(const Eigen::VectorXd& genes, Eigen::VectorXd* constraints,
                    Eigen::SparseMatrix<double>* jacobian = nullptr) const;
   int num_bindings() const { return static_cast<int>(targets_.size()); }
@@ -120,6 +123,8 @@ class FitnessModel {
   };
 
   void Outlines(const Eigen::VectorXd& genes, std::vector<Outline>* outlines) const;
+  // Adds the notch rules of piece `piece` (constructor).
+  void AddNotches(int piece);
   // A piece's points: outline vertices 0..V-1, then one per landmark (used
   // for inside landmarks), then the grain line's start and end; their
   // stencils (with straight runs resolved) in stencils_.
@@ -146,6 +151,12 @@ class FitnessModel {
     int piece, a, b, v;
   };
   std::vector<Collinear> collinear_;
+  struct NotchData {  // a notch kept at its base fraction of its run
+    int piece;
+    std::vector<int> before, after;  // outline vertices from..notch and notch..to
+    double fraction;
+  };
+  std::vector<NotchData> notches_;
   std::vector<std::vector<int>>
       curve_sign_;  // per piece, per vertex: base sign rule (+1, -1, 0 free)
   std::vector<std::vector<bool>> curve_flat_;  // per piece, per vertex: a flat vertex

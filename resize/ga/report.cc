@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "resize/pattern/design_points.h"
 #include "resize/pattern/geometry.h"
 
 namespace bespoke {
@@ -115,10 +116,22 @@ std::vector<StructureFigures> StructureChanges(const Pattern& base, const Patter
           std::max(f.max_dart_mismatch_mm,
                    std::abs((b.outline.row(d.leg_a) - b.outline.row(d.apex)).norm() -
                             (b.outline.row(d.leg_b) - b.outline.row(d.apex)).norm()));
+    for (const NotchRun& run : NotchRuns(base, static_cast<int>(p)))
+      f.max_notch_shift_mm = std::max(f.max_notch_shift_mm, std::abs(NotchShift(b.outline, run)));
     const std::vector<bool> curve = CurveVertices(a.outline, on_run);
     f.new_inflections = std::max(0, Inflections(tb, curve) - Inflections(ta, curve));
     all.push_back(f);
   }
+  return all;
+}
+
+std::vector<DesignDimensionFigures> DesignDimensionChanges(const Pattern& base,
+                                                           const ResizeResult& r) {
+  std::vector<DesignDimensionFigures> all;
+  for (const DesignDimension& d : FindDesignDimensions(base))
+    all.push_back({d.piece, DesignDimensionName(d.kind), MeasureDesignDimension(base, d),
+                   MeasureDesignDimension(r.seed, d), MeasureDesignDimension(r.graded, d),
+                   MeasureDesignDimension(r.fitted, d)});
   return all;
 }
 
@@ -184,7 +197,16 @@ json ResizeReportJson(const Pattern& base, const MeasurementSet& body, const Res
                          {"max_grain_tilt_deg", f.max_grain_tilt_deg},
                          {"max_corner_change_deg", f.max_corner_change_deg},
                          {"max_dart_mismatch_mm", f.max_dart_mismatch_mm},
+                         {"max_notch_shift_mm", f.max_notch_shift_mm},
                          {"new_inflections", f.new_inflections}});
+  json dimensions = json::array();
+  for (const DesignDimensionFigures& d : DesignDimensionChanges(base, r))
+    dimensions.push_back({{"piece", d.piece},
+                          {"dimension", d.name},
+                          {"base_pattern_mm", d.base_mm},
+                          {"proportional_grading_mm", d.grading_mm},
+                          {"graded_start_mm", d.graded_mm},
+                          {"fitted_mm", d.fit_mm}});
   json history = json::array();
   for (const GenerationStats& g : r.history)
     history.push_back({{"generation", g.generation},
@@ -211,6 +233,7 @@ json ResizeReportJson(const Pattern& base, const MeasurementSet& body, const Res
           {"seams", seams},
           {"pieces", pieces},
           {"structure", structure},
+          {"design_dimensions", dimensions},
           {"history", history}};
 }
 
@@ -248,15 +271,28 @@ std::string ResizeReportText(const json& report) {
     s << line;
   }
   s << "\nStructure vs base       kink mm  level deg  fold deg  grain deg  corner deg  dart mm"
-       "  new inflections\n";
+       "  notch mm  new inflections\n";
   for (const json& m : report["structure"]) {
     char line[240];
-    std::snprintf(line, sizeof(line), "  %-18s %9.3f %10.3f %9.3f %10.3f %11.3f %8.3f %16d\n",
+    std::snprintf(line, sizeof(line), "  %-18s %9.3f %10.3f %9.3f %10.3f %11.3f %8.3f %9.3f %16d\n",
                   m["piece"].get<std::string>().c_str(), m["max_kink_mm"].get<double>(),
                   m["max_level_tilt_deg"].get<double>(), m["max_fold_tilt_deg"].get<double>(),
                   m["max_grain_tilt_deg"].get<double>(), m["max_corner_change_deg"].get<double>(),
-                  m["max_dart_mismatch_mm"].get<double>(), m["new_inflections"].get<int>());
+                  m["max_dart_mismatch_mm"].get<double>(), m["max_notch_shift_mm"].get<double>(),
+                  m["new_inflections"].get<int>());
     s << line;
+  }
+  if (report.contains("design_dimensions") && !report["design_dimensions"].empty()) {
+    s << "\nDesign dimensions (mm)          base  prop.grading  graded start    fitted\n";
+    for (const json& m : report["design_dimensions"]) {
+      char line[240];
+      std::snprintf(line, sizeof(line), "  %-14s %-14s %7.1f %13.1f %13.1f %9.1f\n",
+                    m["piece"].get<std::string>().c_str(),
+                    m["dimension"].get<std::string>().c_str(), m["base_pattern_mm"].get<double>(),
+                    m["proportional_grading_mm"].get<double>(), m["graded_start_mm"].get<double>(),
+                    m["fitted_mm"].get<double>());
+      s << line;
+    }
   }
   s << "\nObjectives (as thesis Table 4.2: measurement Eq 4.5 mm, seam Eq 4.8, shape deg)\n";
   for (const char* which : {"proportional_seed", "ga_pick", "final"}) {

@@ -27,8 +27,10 @@ std::vector<PieceShapeChange> ShapeChanges(const Pattern& base, const Pattern& f
 // counts), for a tailor's check: the largest kink on a straight run (an inner
 // vertex's distance from its run's chord, mm), the largest tilt of a level
 // line, fold or grain line (deg), the largest change of a square corner's
-// angle (deg), the largest dart leg-length difference (mm), and the number of
-// new inflections on curved parts of the outline.
+// angle (deg), the largest dart leg-length difference (mm), the largest
+// shift of a notch along the outline from its base fraction between the
+// structure points that bound it (design_points.h NotchShift, mm), and the
+// number of new inflections on curved parts of the outline.
 struct StructureFigures {
   std::string piece;
   double max_kink_mm = 0;
@@ -37,9 +39,19 @@ struct StructureFigures {
   double max_grain_tilt_deg = 0;
   double max_corner_change_deg = 0;
   double max_dart_mismatch_mm = 0;
+  double max_notch_shift_mm = 0;
   int new_inflections = 0;
 };
 std::vector<StructureFigures> StructureChanges(const Pattern& base, const Pattern& fitted);
+
+// A design dimension (design_points.h: sleeve cap height, armhole depth) on
+// the base, proportional grading, the graded start and the fit, mm.
+struct DesignDimensionFigures {
+  std::string piece, name;
+  double base_mm = 0, grading_mm = 0, graded_mm = 0, fit_mm = 0;
+};
+std::vector<DesignDimensionFigures> DesignDimensionChanges(const Pattern& base,
+                                                           const ResizeResult& result);
 
 nlohmann::json ObjectivesJson(const Objectives& o);
 

@@ -2,10 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "eval/resize/evidence.h"
 #include "resize/designs/body_variants.h"
 #include "resize/designs/designs.h"
 #include "resize/ga/grading.h"
+#include "resize/pattern/design_points.h"
 #include "resize/pattern/geometry.h"
 #include "scanners/core/errors.h"
 
@@ -89,6 +92,110 @@ TEST(Resize, FixedStyleDimensionsAreKept) {
     EXPECT_GT(std::abs(hem(patterns.grading, piece) - drafted), 20.0) << piece;
     EXPECT_NEAR(hem(patterns.fitted, piece), drafted, 1.0) << piece;
   }
+}
+
+// A 300 x 100 mm panel with a curved top edge (31 points, 10 mm up in the
+// middle) and a notch on it at x = 200, a third of the edge from the top
+// right corner; corner landmarks; inside landmarks at x = 0, 100 and 300
+// carry two width bindings: the left 100 mm doubled (chest girth 200), the
+// right 200 mm kept (fixed). The notch is a critical point, so a grid line
+// passes through it; the grain is vertical.
+Pattern NotchedPanel() {
+  Piece piece;
+  piece.name = "panel";
+  std::vector<Eigen::Vector2d> points = {{0, 0}, {100, 0}, {300, 0}};
+  for (int k = 0; k <= 30; ++k) {
+    const double x = 300 - 10 * k;
+    points.push_back({x, 100 + 10 * std::sin(M_PI * x / 300)});
+  }
+  piece.outline.resize(static_cast<Eigen::Index>(points.size()), 2);
+  for (size_t i = 0; i < points.size(); ++i)
+    piece.outline.row(static_cast<Eigen::Index>(i)) = points[i];
+  piece.landmarks = {{"bl", "", 0, {}},       {"br", "", 2, {}},      {"tr", "", 3, {}},
+                     {"tl", "", 33, {}},      {"l", "", -1, {0, 50}}, {"m", "", -1, {100, 50}},
+                     {"r", "", -1, {300, 50}}};
+  piece.critical = {0, 1, 2, 3, 13, 33};
+  piece.notches = {13};
+  piece.has_grain = true;
+  piece.grain_start = {150, 20};
+  piece.grain_end = {150, 80};
+  Pattern p;
+  p.name = "panel";
+  p.pieces = {piece};
+  MeasurementBinding left;
+  left.id = "left";
+  left.measurement = "chest_girth";
+  left.terms = {{"panel", "l", "m", BindingTerm::Path::kStraight, 1}};
+  MeasurementBinding right;
+  right.id = "right";
+  right.fixed = true;
+  right.fixed_mm = 200;
+  right.terms = {{"panel", "m", "r", BindingTerm::Path::kStraight, 1}};
+  p.bindings = {left, right};
+  return p;
+}
+
+TEST(Resize, NotchKeepsItsFractionWhenStretchedUnevenly) {
+  const Pattern base = NotchedPanel();
+  const std::vector<NotchRun> runs = NotchRuns(base, 0);
+  ASSERT_EQ(runs.size(), 1u);
+  EXPECT_NEAR(runs[0].fraction, 1.0 / 3, 0.01);
+  ResizeOptions o = Small();
+  o.generations = 0;
+  const MeasurementSet body = {{"chest_girth", 200}};
+  const ResizeResult r = ResizePattern(o, base, body, nullptr);
+  EXPECT_NEAR(r.achieved_mm[0], 200, 0.1);
+  EXPECT_NEAR(r.achieved_mm[1], 200, 0.1);
+  EXPECT_LT(std::abs(NotchShift(r.fitted.pieces[0].outline, runs[0])), 0.1);
+  EXPECT_LT(std::abs(NotchShift(r.graded.pieces[0].outline, runs[0])), 0.1);
+  // Without the notch the same fit leaves it where the grid carries it (49
+  // mm short of its third when written).
+  Pattern plain = base;
+  plain.pieces[0].notches.clear();
+  const ResizeResult q = ResizePattern(o, plain, body, nullptr);
+  EXPECT_GT(std::abs(NotchShift(q.fitted.pieces[0].outline, runs[0])), 20.0);
+}
+
+TEST(Resize, NotchesMatchedAcrossASeamStayMatched) {
+  // A band sewn onto the panel's curved top edge (the same 31 points, so
+  // stitch i pairs equal points), with the matching notch at x = 200: the
+  // panel's left half doubles, the band follows only through the seam.
+  Pattern p = NotchedPanel();
+  Piece band;
+  band.name = "band";
+  band.outline.resize(33, 2);
+  for (int k = 0; k <= 30; ++k) band.outline.row(k) = p.pieces[0].outline.row(33 - k);
+  band.outline.row(31) << 300, 200;
+  band.outline.row(32) << 0, 200;
+  band.landmarks = {{"bl", "", 0, {}}, {"br", "", 30, {}}, {"tr", "", 31, {}}, {"tl", "", 32, {}}};
+  band.critical = {0, 20, 30, 31, 32};
+  band.notches = {20};
+  band.has_grain = true;
+  band.grain_start = {150, 150};
+  band.grain_end = {150, 190};
+  p.pieces.push_back(band);
+  Seam seam;
+  seam.name = "top";
+  seam.a = {"panel", 3, 33, true};
+  seam.b = {"band", 30, 0, false};
+  p.seams = {seam};
+  ResizeOptions o = Small();
+  o.generations = 0;
+  const ResizeResult r = ResizePattern(o, p, {{"chest_girth", 200}}, nullptr);
+  EXPECT_LT(std::abs(r.seam_mismatch_mm[0]), 0.1);
+  const Outline &a = r.fitted.pieces[0].outline, &b = r.fitted.pieces[1].outline;
+  // Along the seam from its start (the panel's top right, the band's
+  // bottom right) to each notch: the same length.
+  const double to_a = OutlineDistance(a, 3, 13), to_b = OutlineDistance(b, 30, 20, false);
+  EXPECT_GT(to_a, 100 + 30);  // the seam really changed (100 mm in the base)
+  EXPECT_NEAR(to_a, to_b, 0.1);
+  // Without the notches the two places part (85 and 134 mm when written).
+  Pattern plain = p;
+  for (Piece& piece : plain.pieces) piece.notches.clear();
+  const ResizeResult q = ResizePattern(o, plain, {{"chest_girth", 200}}, nullptr);
+  EXPECT_GT(std::abs(OutlineDistance(q.fitted.pieces[0].outline, 3, 13) -
+                     OutlineDistance(q.fitted.pieces[1].outline, 30, 20, false)),
+            20.0);
 }
 
 TEST(Resize, PolishAndGraderOptionsRejectBadValues) {

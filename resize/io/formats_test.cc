@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "resize/designs/designs.h"
@@ -105,10 +106,35 @@ TEST(PatternDxf, ReadsTheValentinaSamples) {
   EXPECT_EQ(small.pieces[0].cut_count, 2);
   EXPECT_TRUE(small.pieces[0].has_grain);
   EXPECT_EQ(small.pieces[0].notches.size(), 1u);
-  EXPECT_EQ(small.pieces[0].num_vertices(), 33);  // layer 14: 34 vertices, the first repeated
+  // Layer 14: 34 vertices, the first repeated; one added where the notch
+  // (on the cut line) meets the sew line between two vertices.
+  EXPECT_EQ(small.pieces[0].num_vertices(), 34);
+  EXPECT_EQ(std::count_if(small.notes.begin(), small.notes.end(),
+                          [](const std::string& n) { return n.find("1 notch") != n.npos; }),
+            1);
   // The same pattern written by us and read back keeps its sew line.
   const Pattern again = PatternFromDxf(PatternToDxf(DxfWriteOptions{}, small), "again.dxf");
   EXPECT_EQ(again.pieces[0].num_vertices(), small.pieces[0].num_vertices());
+}
+
+TEST(PatternDxf, NotchesGoToTheNearestPointOfTheSewLine) {
+  // A 100 mm square sew line; a notch 10 mm outside the right edge at
+  // height 37 (no vertex there: one is added) and one 10 mm above the top
+  // right corner (taken by that vertex).
+  std::string dxf = "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nP1\n0\nLWPOLYLINE\n8\n14\n70\n1\n";
+  for (const char* xy : {"0\n20\n0", "100\n20\n0", "100\n20\n100", "0\n20\n100"})
+    dxf += std::string("10\n") + xy + "\n";
+  dxf += "0\nPOINT\n8\n4\n10\n110\n20\n37\n0\nPOINT\n8\n4\n10\n100.3\n20\n110\n";
+  dxf += "0\nENDBLK\n0\nENDSEC\n0\nEOF\n";
+  const Pattern p = PatternFromDxf(dxf, "square.dxf");
+  ASSERT_EQ(p.pieces.size(), 1u);
+  const Piece& piece = p.pieces[0];
+  ASSERT_EQ(piece.num_vertices(), 5);
+  EXPECT_EQ(piece.outline.row(2), Eigen::RowVector2d(100, 37));
+  EXPECT_EQ(piece.notches, (std::vector<int>{2, 3}));
+  EXPECT_EQ(piece.outline.row(3), Eigen::RowVector2d(100, 100));
+  ASSERT_EQ(p.notes.size(), 1u);
+  EXPECT_NE(p.notes[0].find("1 notch"), std::string::npos);
 }
 
 TEST(PatternDxf, MalformedFilesAreInputErrors) {

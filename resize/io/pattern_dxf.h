@@ -13,8 +13,9 @@
 // Reading accepts R12 (POLYLINE/VERTEX/SEQEND) and 2000 (LWPOLYLINE) files,
 // with INSERT translation/scale/rotation. A piece's outline is its sew line
 // (14, else the largest closed polyline on 8, else the cut line on 1),
-// turned counter-clockwise (with a note, edit.h), repeated and duplicate vertices dropped; notches
-// snap to the nearest outline vertex; "Cut N" text sets the cut count; the
+// turned counter-clockwise (with a note, edit.h), repeated and duplicate vertices dropped; a
+// notch goes to the nearest point of the outline, at its nearest vertex when within 0.5 mm,
+// else at a vertex added there (with a note); "Cut N" text sets the cut count; the
 // first other text on layer 1 names the piece (else the block name).
 // Landmarks, seams and bindings are not in DXF: a sidecar JSON adds them
 // (ApplySidecar in pattern_json.h). Malformed files throw InputError naming

@@ -1,6 +1,8 @@
 // DXF reader for AAMA/ASTM pattern files (R12 and 2000). See pattern_dxf.h.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -131,8 +133,55 @@ Outline Clean(std::vector<Eigen::Vector2d> points) {
   return o;
 }
 
-Piece BuildPiece(const RawBlock& block, const Insert& insert, double unit,
-                 const std::string& what) {
+// A notch farther than this along the sew line from the nearest vertex gets
+// a vertex of its own (mm): half the 1 mm a notch may shift in a fit.
+constexpr double kNotchVertexMm = 0.5;
+
+// Puts a notch at the point of the sew line nearest to each of `points`
+// (Valentina marks notches on the cut line): at the nearest vertex when it is
+// within kNotchVertexMm, else at a vertex added there (the outline's shape
+// is unchanged), so the notch keeps its place along its seam. Notes say
+// where vertices were added.
+void PlaceNotches(const std::vector<Eigen::Vector2d>& points, Piece* piece,
+                  std::vector<std::string>* notes) {
+  std::set<int> notches;
+  int added = 0;
+  for (const Eigen::Vector2d& q : points) {
+    Outline& o = piece->outline;
+    const int n = piece->num_vertices();
+    int edge = 0;
+    double best = std::numeric_limits<double>::infinity(), best_t = 0;
+    for (int v = 0; v < n; ++v) {
+      const Eigen::Vector2d a = o.row(v), d = Eigen::Vector2d(o.row((v + 1) % n)) - a;
+      const double t = std::clamp((q - a).dot(d) / std::max(d.squaredNorm(), 1e-12), 0.0, 1.0);
+      const double dist = (a + t * d - q).norm();
+      if (dist < best) best = dist, edge = v, best_t = t;
+    }
+    const double length = (o.row((edge + 1) % n) - o.row(edge)).norm();
+    if (best_t * length <= kNotchVertexMm || (1 - best_t) * length <= kNotchVertexMm) {
+      notches.insert(best_t < 0.5 ? edge : (edge + 1) % n);
+      continue;
+    }
+    Outline out(n + 1, 2);
+    out.topRows(edge + 1) = o.topRows(edge + 1);
+    out.row(edge + 1) = o.row(edge) + best_t * (o.row((edge + 1) % n) - o.row(edge));
+    out.bottomRows(n - edge - 1) = o.bottomRows(n - edge - 1);
+    o = out;
+    std::set<int> moved;
+    for (int v : notches) moved.insert(v > edge ? v + 1 : v);
+    moved.insert(edge + 1);
+    notches = moved;
+    ++added;
+  }
+  piece->notches.assign(notches.begin(), notches.end());
+  if (added > 0)
+    notes->push_back("piece '" + piece->name + "': " + std::to_string(added) +
+                     " notch(es) between sew-line vertices; a vertex was added at each, so "
+                     "the notch keeps its place along its seam");
+}
+
+Piece BuildPiece(const RawBlock& block, const Insert& insert, double unit, const std::string& what,
+                 std::vector<std::string>* notes) {
   const double c = std::cos(insert.angle_deg * M_PI / 180),
                s = std::sin(insert.angle_deg * M_PI / 180);
   auto place = [&](const Eigen::Vector2d& p) -> Eigen::Vector2d {
@@ -159,7 +208,7 @@ Piece BuildPiece(const RawBlock& block, const Insert& insert, double unit,
   std::vector<Eigen::Vector2d> pts;
   for (const Eigen::Vector2d& p : sew->points) pts.push_back(place(p));
   piece.outline = Clean(pts);
-  std::set<int> notches;
+  std::vector<Eigen::Vector2d> notch_points;
   bool named = false;
   for (const Entity& e : block.entities) {
     if (&e == sew || &e == cut) continue;
@@ -173,9 +222,7 @@ Piece BuildPiece(const RawBlock& block, const Insert& insert, double unit,
       for (size_t i = 0; i < line.size(); ++i) o.row(i) = line[i].transpose();
       piece.internal_lines.push_back(o);
     } else if (e.layer == "4" && (e.type == "POINT" || e.type == "LINE")) {
-      Eigen::Index nearest = 0;
-      (piece.outline.rowwise() - p0.transpose()).rowwise().squaredNorm().minCoeff(&nearest);
-      notches.insert(static_cast<int>(nearest));
+      notch_points.push_back(p0);
     } else if (e.layer == "7" && e.type == "LINE") {
       piece.has_grain = true;
       piece.grain_start = p0;
@@ -193,7 +240,7 @@ Piece BuildPiece(const RawBlock& block, const Insert& insert, double unit,
       }
     }
   }
-  piece.notches.assign(notches.begin(), notches.end());
+  PlaceNotches(notch_points, &piece, notes);
   return piece;
 }
 
@@ -238,7 +285,8 @@ Pattern PatternFromDxf(const std::string& text, const std::string& what) {
     if (block.name.empty() || block.name[0] == '*' || block.name[0] == '$') continue;
     if (block.entities.empty()) continue;
     const auto it = inserts.find(block.name);
-    Piece piece = BuildPiece(block, it == inserts.end() ? Insert{} : it->second, unit, what);
+    Piece piece =
+        BuildPiece(block, it == inserts.end() ? Insert{} : it->second, unit, what, &pattern.notes);
     if (pattern.FindPiece(piece.name) >= 0) piece.name = block.name;  // keep names unique
     pattern.pieces.push_back(std::move(piece));
   }
