@@ -105,6 +105,7 @@ class FitnessModel {
     std::vector<double> edge_target;  // target la_i - lb_i per edge (mm)
     std::vector<double> angle_base;   // base turning(a) - turning(b) at inner points (rad)
     double ease = 0;
+    bool forward_a = true, forward_b = true;  // each side walks its outline forwards
   };
   struct Direction {  // a fold, level line or grain line kept at its base direction
     int piece;

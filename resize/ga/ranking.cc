@@ -98,9 +98,11 @@ std::vector<double> CrowdingDistance(const std::vector<ObjectivePoint>& front) {
   return pagmo::crowding_distance(points);
 }
 
-std::vector<int> SelectBest(const std::vector<ObjectivePoint>& points, int n) {
+std::vector<int> SelectBest(const std::vector<ObjectivePoint>& points, int n,
+                            std::vector<int>* rank) {
   std::vector<int> chosen;
-  for (const std::vector<int>& front : SortFronts(points).fronts) {
+  const Fronts fronts = SortFronts(points);
+  for (const std::vector<int>& front : fronts.fronts) {
     const int room = n - static_cast<int>(chosen.size());
     if (static_cast<int>(front.size()) <= room) {
       chosen.insert(chosen.end(), front.begin(), front.end());
@@ -116,6 +118,10 @@ std::vector<int> SelectBest(const std::vector<ObjectivePoint>& points, int n) {
               [&](size_t a, size_t b) { return Greater(crowding[a], crowding[b]); });
     for (int k = 0; k < room; ++k) chosen.push_back(front[order[k]]);
     break;
+  }
+  if (rank) {
+    rank->clear();
+    for (int i : chosen) rank->push_back(fronts.rank[i]);
   }
   return chosen;
 }

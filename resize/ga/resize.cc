@@ -1,6 +1,7 @@
 #include "resize/ga/resize.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <chrono>
@@ -38,13 +39,14 @@ struct Ranking {
   std::vector<double> crowding;
 };
 
-Ranking Rank(const Population& pop) {
+// Of the first `n` individuals of `pop`.
+Ranking Rank(const Population& pop, size_t n) {
   std::vector<ObjectivePoint> points;
-  for (const Individual& ind : pop) points.push_back(Point(ind.objectives));
+  for (size_t i = 0; i < n; ++i) points.push_back(Point(pop[i].objectives));
   const Fronts fronts = SortFronts(points);
   Ranking r;
   r.rank = fronts.rank;
-  r.crowding.assign(pop.size(), std::numeric_limits<double>::infinity());
+  r.crowding.assign(n, std::numeric_limits<double>::infinity());
   for (const std::vector<int>& front : fronts.fronts) {
     std::vector<ObjectivePoint> front_points;
     for (int i : front) front_points.push_back(points[i]);
@@ -104,12 +106,14 @@ size_t Pick(const FitnessModel& model, const Population& pop, const Ranking& r, 
   return best == pop.size() ? 0 : best;
 }
 
+// Ages the first `n` individuals of `pop`, the parents of the next
+// generation; `rank`: each one's front (from the selection that chose them).
 void Age(const ResizeOptions& options, const BlockSet& blocks, const FitnessModel& model,
-         const MutationParams& mutation, Rng& rng, Population* pop) {
-  const Ranking r = Rank(*pop);
+         const MutationParams& mutation, const std::vector<int>& rank, Rng& rng, size_t n,
+         Population* pop) {
   // Scalar cost for Eq 4.2: sum of the objectives normalised over the population.
-  Eigen::MatrixXd f(pop->size(), 3);
-  for (size_t i = 0; i < pop->size(); ++i) {
+  Eigen::MatrixXd f(n, 3);
+  for (size_t i = 0; i < n; ++i) {
     const auto p = Point((*pop)[i].objectives);
     f.row(i) << p[0], p[1], p[2];
   }
@@ -117,17 +121,18 @@ void Age(const ResizeOptions& options, const BlockSet& blocks, const FitnessMode
                            span = (f.colwise().maxCoeff() - lo).cwiseMax(1e-12);
   const Eigen::VectorXd cost =
       ((f.rowwise() - lo).array().rowwise() / span.array()).rowwise().sum();
+  const double cost_min = cost.minCoeff(), cost_max = cost.maxCoeff(), cost_mean = cost.mean();
   std::vector<size_t> first;
-  for (size_t i = 0; i < pop->size(); ++i)
-    if (r.rank[i] == 0) first.push_back(i);
+  for (size_t i = 0; i < n; ++i)
+    if (rank[i] == 0) first.push_back(i);
   std::vector<size_t> reborn;
-  for (size_t i = 0; i < pop->size(); ++i) {
+  for (size_t i = 0; i < n; ++i) {
     Individual& ind = (*pop)[i];
     ++ind.age;
-    const double life = LifeSpan(cost[i], cost.minCoeff(), cost.maxCoeff(), cost.mean(),
-                                 options.life_min, options.life_max);
+    const double life =
+        LifeSpan(cost[i], cost_min, cost_max, cost_mean, options.life_min, options.life_max);
     // Deviation: the first front never dies, or the best answer could be lost.
-    if (r.rank[i] == 0 || ind.age <= life) continue;
+    if (rank[i] == 0 || ind.age <= life) continue;
     const size_t parent = first[std::uniform_int_distribution<size_t>(0, first.size() - 1)(rng)];
     ind.genes = (*pop)[parent].genes;
     NonUniformMutation(blocks, mutation, rng, &ind.genes);
@@ -194,13 +199,14 @@ Evolution Evolve(const ResizeOptions& options, const FitnessModel& model,
   const BlockSet& blocks = model.blocks();
   Rng rng(options.seed);
   const size_t n = static_cast<size_t>(options.population);
-  Population pop(n);
-  for (size_t i = 0; i < n; ++i) {
-    pop[i].genes = start;
-    if (i > 0)
-      AddGaussianNoise(blocks, options.noise_sigma_mm, options.min_gap_mm, rng, &pop[i].genes);
-  }
-  EvaluateRange(model, &pop, 0, n);
+  // Parents in [0, n), offspring in [n, 2n); after the selection the
+  // survivors move to the front and the rest keep their gene storage for
+  // the next offspring, so the loop does not allocate.
+  Population all(2 * n), sorted(2 * n);
+  for (size_t i = 0; i < 2 * n; ++i) all[i].genes = start;
+  for (size_t i = 1; i < n; ++i)
+    AddGaussianNoise(blocks, options.noise_sigma_mm, options.min_gap_mm, rng, &all[i].genes);
+  EvaluateRange(model, &all, 0, n);
   ProgressBegin(progress, "evolving", options.generations);
   MutationParams mutation;
   mutation.max_generations = std::max(options.generations, 1);
@@ -208,49 +214,59 @@ Evolution Evolve(const ResizeOptions& options, const FitnessModel& model,
   mutation.range_fraction = options.mutation_range;
   mutation.min_gap_mm = options.min_gap_mm;
   Evolution evolution;
+  std::vector<ObjectivePoint> points(2 * n);
+  std::vector<int> rank;
+  std::vector<char> kept(2 * n);
   for (int gen = 0; gen < options.generations; ++gen) {
     mutation.generation = gen;
     const double mutation_rate = std::max(options.mutation_rate_min,
                                           options.mutation_rate - options.mutation_rate_step * gen);
-    const Ranking ranking = Rank(pop);
-    Population next = pop;
-    next.resize(2 * n);
+    const Ranking ranking = Rank(all, n);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (size_t k = 0; k < n; k += 2) {
       // Algorithm 7's parents an index interval apart: the mother by crowded
       // tournament, the father delta places after her, delta random.
       const size_t mother = Tournament(ranking, rng);
       const size_t delta = std::uniform_int_distribution<size_t>(1, n / 4)(rng);
-      Individual& a = next[n + k];
-      Individual& b = next[n + k + 1];
-      a = Individual{pop[mother].genes, {}, 0};
-      b = Individual{pop[(mother + delta) % n].genes, {}, 0};
+      Individual& a = all[n + k];
+      Individual& b = all[n + k + 1];
+      a.genes = all[mother].genes;
+      b.genes = all[(mother + delta) % n].genes;
+      a.age = b.age = 0;
       if (u(rng) < options.crossover_rate)
         UniformCrossover(blocks, options.min_gap_mm, rng, &a.genes, &b.genes);
       if (u(rng) < mutation_rate) NonUniformMutation(blocks, mutation, rng, &a.genes);
       if (u(rng) < mutation_rate) NonUniformMutation(blocks, mutation, rng, &b.genes);
     }
-    EvaluateRange(model, &next, n, 2 * n);
-    std::vector<ObjectivePoint> points;
-    for (const Individual& ind : next) points.push_back(Point(ind.objectives));
-    const std::vector<int> keep = SelectBest(points, static_cast<int>(n));
-    for (size_t i = 0; i < n; ++i) pop[i] = std::move(next[keep[i]]);
-    Age(options, blocks, model, mutation, rng, &pop);
+    EvaluateRange(model, &all, n, 2 * n);
+    for (size_t i = 0; i < 2 * n; ++i) points[i] = Point(all[i].objectives);
+    const std::vector<int> keep = SelectBest(points, static_cast<int>(n), &rank);
+    std::fill(kept.begin(), kept.end(), 0);
+    for (size_t i = 0; i < n; ++i) {
+      sorted[i] = std::move(all[keep[i]]);
+      kept[keep[i]] = 1;
+    }
+    for (size_t i = 0, spare = n; i < 2 * n; ++i)
+      if (!kept[i]) sorted[spare++] = std::move(all[i]);
+    std::swap(all, sorted);
+    Age(options, blocks, model, mutation, rank, rng, n, &all);
     GenerationStats stats;
     stats.generation = gen + 1;
     stats.best_measurement_mm = stats.best_seam = stats.best_shape_deg =
         std::numeric_limits<double>::infinity();
-    for (const Individual& ind : pop) {
-      stats.best_measurement_mm =
-          std::min(stats.best_measurement_mm, ind.objectives.measurement_mm);
-      stats.best_seam = std::min(stats.best_seam, ind.objectives.seam);
-      stats.best_shape_deg = std::min(stats.best_shape_deg, ind.objectives.shape_deg);
+    for (size_t i = 0; i < n; ++i) {
+      const Objectives& o = all[i].objectives;
+      stats.best_measurement_mm = std::min(stats.best_measurement_mm, o.measurement_mm);
+      stats.best_seam = std::min(stats.best_seam, o.seam);
+      stats.best_shape_deg = std::min(stats.best_shape_deg, o.shape_deg);
     }
     evolution.history.push_back(stats);
     ProgressUpdate(progress, gen + 1);
   }
+  all.resize(n);
+  const Population& pop = all;
   ProgressEnd(progress);
-  const Ranking ranking = Rank(pop);
+  const Ranking ranking = Rank(pop, n);
   for (size_t i = 0; i < n; ++i)
     if (ranking.rank[i] == 0) evolution.front.push_back(pop[i].objectives);
   if (!evolution.history.empty())
@@ -310,21 +326,25 @@ ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& given_ba
     // tolerance, simple outlines) with the least shape change from the base
     // (the thesis's criterion); the graded start wins ties, so the GA's
     // noise is kept only where it lowers the shape change.
-    Eigen::VectorXd polished = graded;
-    result.polish = Polish(options.polish_options, model, &polished);
+    // The two projections are independent: they run side by side.
+    Eigen::VectorXd polished = graded, from_ga = genes;
+    PolishReport from_ga_report;
+    tbb::parallel_invoke([&] { result.polish = Polish(options.polish_options, model, &polished); },
+                         [&] {
+                           if (options.generations > 0)
+                             from_ga_report = Polish(options.polish_options, model, &from_ga);
+                         });
     result.polish_start = "graded";
     if (options.generations > 0) {
       auto ok = [&](const PolishReport& r, const Objectives& o) {
         return r.max_constraint_after_mm <= options.tolerance_mm && o.simple;
       };
       const Objectives from_graded = model.Evaluate(polished, true);
-      Eigen::VectorXd from_ga = genes;
-      const PolishReport report = Polish(options.polish_options, model, &from_ga);
       const Objectives o = model.Evaluate(from_ga, true);
-      if (ok(report, o) &&
+      if (ok(from_ga_report, o) &&
           (!ok(result.polish, from_graded) || o.shape_deg < from_graded.shape_deg)) {
         polished = from_ga;
-        result.polish = report;
+        result.polish = from_ga_report;
         result.polish_start = "ga";
       }
     }
