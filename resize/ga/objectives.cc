@@ -16,8 +16,33 @@ double Turning(const Outline& o, const std::vector<int>& idx, size_t k) {
   return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
 }
 
+}  // namespace
+
+double FastAtan2(double y, double x) {
+  constexpr double kTan15 = 0.26794919243112270;  // tan(pi / 12)
+  constexpr double kSqrt3 = 1.7320508075688772;
+  const double ax = std::abs(x), ay = std::abs(y);
+  const double big = std::max(ax, ay), small = std::min(ax, ay);
+  if (!(big > 0) || !std::isfinite(big)) return std::atan2(y, x);
+  double r = small / big, base = 0;  // atan(small / big) in [0, pi / 4]
+  if (r > kTan15) {  // atan(r) = pi / 6 + atan((r sqrt3 - 1) / (r + sqrt3)), |that| <= tan(pi / 12)
+    r = (r * kSqrt3 - 1) / (r + kSqrt3);
+    base = M_PI / 6;
+  }
+  // The arctangent's series to r^21: the next term is below 3e-15 for |r| <= tan(pi / 12).
+  const double r2 = r * r;
+  double p = 1.0 / 21;
+  for (int k = 9; k >= 0; --k) p = p * -r2 + 1.0 / (2 * k + 1);
+  double a = base + r * p;
+  if (ay > ax) a = M_PI / 2 - a;
+  if (x < 0) a = M_PI - a;
+  return std::signbit(y) ? -a : a;
+}
+
+namespace {
+
 // Turning angle at every vertex of a closed outline (rad, left positive),
-// as TurningAngles computes it, into `out` (resized only when its size
+// as TurningAngles computes it (with FastAtan2), into `out` (resized only when its size
 // differs, so a buffer reused across calls is not reallocated).
 void TurningInto(const Outline& o, Eigen::VectorXd* out) {
   const int n = static_cast<int>(o.rows());
@@ -25,7 +50,7 @@ void TurningInto(const Outline& o, Eigen::VectorXd* out) {
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector2d a = o.row(i) - o.row((i - 1 + n) % n);
     const Eigen::Vector2d b = o.row((i + 1) % n) - o.row(i);
-    (*out)[i] = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+    (*out)[i] = FastAtan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
   }
 }
 

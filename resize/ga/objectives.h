@@ -41,6 +41,12 @@ struct Objectives {
   bool simple = true;             // every outline free of self-intersections (final checks only)
 };
 
+// atan2(y, x) within 1e-14 rad of the C library's (a range reduction to
+// |t| <= tan(15 deg) and the series), for the turning angle at every outline
+// vertex of every individual the GA evaluates, where std::atan2 took half
+// the evaluation's time. Non-finite or zero arguments go to std::atan2.
+double FastAtan2(double y, double x);
+
 // Everything fixed during one fit: the base pattern, its blocks, targets and
 // base angles. Const members are thread-safe (no shared mutable state).
 class FitnessModel {

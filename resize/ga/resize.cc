@@ -2,9 +2,11 @@
 
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <limits>
 
 #include "resize/ga/grader.h"
@@ -125,7 +127,14 @@ void Age(const ResizeOptions& options, const BlockSet& blocks, const FitnessMode
   std::vector<size_t> first;
   for (size_t i = 0; i < n; ++i)
     if (rank[i] == 0) first.push_back(i);
-  std::vector<size_t> reborn;
+  // The dead are reborn as mutants of first-front members; each draws its
+  // mutation from a generator of its own (seeded in order from the run's),
+  // so they are mutated and evaluated in parallel.
+  struct Rebirth {
+    size_t individual, parent;
+    uint64_t seed;
+  };
+  std::vector<Rebirth> reborn;
   for (size_t i = 0; i < n; ++i) {
     Individual& ind = (*pop)[i];
     ++ind.age;
@@ -134,13 +143,15 @@ void Age(const ResizeOptions& options, const BlockSet& blocks, const FitnessMode
     // Deviation: the first front never dies, or the best answer could be lost.
     if (rank[i] == 0 || ind.age <= life) continue;
     const size_t parent = first[std::uniform_int_distribution<size_t>(0, first.size() - 1)(rng)];
-    ind.genes = (*pop)[parent].genes;
-    NonUniformMutation(blocks, mutation, rng, &ind.genes);
-    ind.age = 0;
-    reborn.push_back(i);
+    reborn.push_back({i, parent, rng()});
   }
   tbb::parallel_for(size_t(0), reborn.size(), [&](size_t k) {
-    (*pop)[reborn[k]].objectives = model.Evaluate((*pop)[reborn[k]].genes);
+    Individual& ind = (*pop)[reborn[k].individual];
+    Rng own(reborn[k].seed);
+    ind.genes = (*pop)[reborn[k].parent].genes;
+    NonUniformMutation(blocks, mutation, own, &ind.genes);
+    ind.age = 0;
+    ind.objectives = model.Evaluate(ind.genes);
   });
 }
 
@@ -151,6 +162,7 @@ void ResizeOptions::Check() const {
     throw InputError("--population must be even and at least 8 (got " + std::to_string(population) +
                      ")");
   if (generations < 0) throw InputError("--generations must be >= 0");
+  if (threads < 0) throw InputError("--threads must be >= 0 (0 = all CPUs)");
   if (crossover_rate < 0 || crossover_rate > 1 || mutation_rate < 0 || mutation_rate > 1)
     throw InputError("crossover and mutation rates must be in [0, 1]");
   if (!(mutation_range > 0) || noise_sigma_mm < 0 || !(life_min > 0) || life_max < life_min ||
@@ -217,28 +229,35 @@ Evolution Evolve(const ResizeOptions& options, const FitnessModel& model,
   std::vector<ObjectivePoint> points(2 * n);
   std::vector<int> rank;
   std::vector<char> kept(2 * n);
+  std::vector<uint64_t> pair_seeds(n / 2);
   for (int gen = 0; gen < options.generations; ++gen) {
     mutation.generation = gen;
     const double mutation_rate = std::max(options.mutation_rate_min,
                                           options.mutation_rate - options.mutation_rate_step * gen);
     const Ranking ranking = Rank(all, n);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    for (size_t k = 0; k < n; k += 2) {
+    // Each mating pair draws from a generator of its own, seeded in order
+    // from the run's: the pairs are bred and evaluated in parallel and the
+    // result does not depend on the thread count.
+    for (uint64_t& s : pair_seeds) s = rng();
+    tbb::parallel_for(size_t(0), n / 2, [&](size_t pair) {
+      Rng pair_rng(pair_seeds[pair]);
+      std::uniform_real_distribution<double> u(0.0, 1.0);
       // Algorithm 7's parents an index interval apart: the mother by crowded
       // tournament, the father delta places after her, delta random.
-      const size_t mother = Tournament(ranking, rng);
-      const size_t delta = std::uniform_int_distribution<size_t>(1, n / 4)(rng);
-      Individual& a = all[n + k];
-      Individual& b = all[n + k + 1];
+      const size_t mother = Tournament(ranking, pair_rng);
+      const size_t delta = std::uniform_int_distribution<size_t>(1, n / 4)(pair_rng);
+      Individual& a = all[n + 2 * pair];
+      Individual& b = all[n + 2 * pair + 1];
       a.genes = all[mother].genes;
       b.genes = all[(mother + delta) % n].genes;
       a.age = b.age = 0;
-      if (u(rng) < options.crossover_rate)
-        UniformCrossover(blocks, options.min_gap_mm, rng, &a.genes, &b.genes);
-      if (u(rng) < mutation_rate) NonUniformMutation(blocks, mutation, rng, &a.genes);
-      if (u(rng) < mutation_rate) NonUniformMutation(blocks, mutation, rng, &b.genes);
-    }
-    EvaluateRange(model, &all, n, 2 * n);
+      if (u(pair_rng) < options.crossover_rate)
+        UniformCrossover(blocks, options.min_gap_mm, pair_rng, &a.genes, &b.genes);
+      if (u(pair_rng) < mutation_rate) NonUniformMutation(blocks, mutation, pair_rng, &a.genes);
+      if (u(pair_rng) < mutation_rate) NonUniformMutation(blocks, mutation, pair_rng, &b.genes);
+      a.objectives = model.Evaluate(a.genes);
+      b.objectives = model.Evaluate(b.genes);
+    });
     for (size_t i = 0; i < 2 * n; ++i) points[i] = Point(all[i].objectives);
     const std::vector<int> keep = SelectBest(points, static_cast<int>(n), &rank);
     std::fill(kept.begin(), kept.end(), 0);
@@ -275,11 +294,8 @@ Evolution Evolve(const ResizeOptions& options, const FitnessModel& model,
   return evolution;
 }
 
-}  // namespace
-
-ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& given_base,
-                           const MeasurementSet& given, Progress* progress) {
-  options.Check();
+ResizeResult Resize(const ResizeOptions& options, const Pattern& given_base,
+                    const MeasurementSet& given, Progress* progress) {
   MeasurementSet body = given;
   AddDerivedMeasurements(&body, "the measurements");
   Pattern full = given_base;
@@ -358,6 +374,16 @@ ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& given_ba
   result.achieved_mm = model.Achieved(genes);
   result.seam_mismatch_mm = model.SeamMismatch(genes);
   return result;
+}
+
+}  // namespace
+
+ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& given_base,
+                           const MeasurementSet& given, Progress* progress) {
+  options.Check();
+  if (options.threads == 0) return Resize(options, given_base, given, progress);
+  tbb::task_arena arena(options.threads);
+  return arena.execute([&] { return Resize(options, given_base, given, progress); });
 }
 
 }  // namespace bespoke

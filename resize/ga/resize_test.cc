@@ -1,7 +1,6 @@
 #include "resize/ga/resize.h"
 
 #include <gtest/gtest.h>
-#include <tbb/global_control.h>
 
 #include "eval/resize/evidence.h"
 #include "resize/designs/body_variants.h"
@@ -123,10 +122,10 @@ TEST(Resize, SameAnswerWhateverTheThreadCount) {
   const Pattern pattern = DraftDesign("shirt", BaseMeasurements("shirt"));
   ResizeOptions o = Small();
   auto run = [&](int threads) {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    o.threads = threads;
     return ResizePattern(o, pattern, body, nullptr);
   };
-  const ResizeResult one = run(1), several = run(4);
+  const ResizeResult one = run(1), several = run(3);
   EXPECT_EQ(MaxVertexMove(one.fitted, several.fitted), 0.0);
   EXPECT_EQ(one.ga_objectives.shape_deg, several.ga_objectives.shape_deg);
   EXPECT_EQ(one.ga_objectives.seam, several.ga_objectives.seam);
