@@ -1,7 +1,7 @@
 // `bespoke resize --pattern PATTERN|--design shirt|trousers
 //                 --measurements MEAS.json|--scan SCAN
 //                 -o OUT_DIR [--sidecar SIDECAR.json] [--seed N] [--population 400]
-//                 [--generations 200] [--seam-allowance 10] [--no-polish]`
+//                 [--generations 200] [--threads 0] [--seam-allowance 10] [--no-polish]`
 // Fits a base pattern to a body's measurements with the multi-objective GA
 // of thesis chapter 4 (resize/ga/resize.h). With --scan the measurements
 // are taken from the scan first, by the pipeline's single-scan job
@@ -24,6 +24,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdint>
+#include <future>
 #include <random>
 #include <string>
 
@@ -195,6 +196,7 @@ int RunResize(const ResizeCommandOptions& o, const GlobalOptions& global) {
                                    {"seed", options.seed},
                                    {"population", options.population},
                                    {"generations", options.generations},
+                                   {"threads", options.threads},
                                    {"crossover_rate", options.crossover_rate},
                                    {"mutation_rate", options.mutation_rate},
                                    {"mutation_rate_step", options.mutation_rate_step},
@@ -202,6 +204,13 @@ int RunResize(const ResizeCommandOptions& o, const GlobalOptions& global) {
                                    {"tolerance_mm", options.tolerance_mm},
                                    {"seam_allowance_mm", o.seam_allowance_mm}};
   const nlohmann::json report = ResizeReportJson(base, body, result, settings);
+  // The two pictures (most of the writing time) are drawn on a second
+  // thread while the pattern files are written (after them with --threads 1).
+  const auto policy = options.threads == 1 ? std::launch::deferred : std::launch::async;
+  std::future<void> pictures = std::async(policy, [&] {
+    WriteConvergence(result, o.out_dir / "convergence.png");
+    WriteOverlay(base, result, o.out_dir / "overlay.png");
+  });
   if (!o.scan.empty()) WriteJsonFile(o.out_dir / "measurements.json", scan_document);
   WritePatternJson(result.fitted, o.out_dir / "fitted.json");
   SvgOptions svg;
@@ -213,8 +222,7 @@ int RunResize(const ResizeCommandOptions& o, const GlobalOptions& global) {
   WriteFileAtomically(o.out_dir / "pareto_front.csv", ParetoFrontCsv(result));
   WriteJsonFile(o.out_dir / "report.json", report);
   WriteFileAtomically(o.out_dir / "report.txt", ResizeReportText(report));
-  WriteConvergence(result, o.out_dir / "convergence.png");
-  WriteOverlay(base, result, o.out_dir / "overlay.png");
+  pictures.get();
   spdlog::info(
       "fitted '{}' in {:.2f} s: worst binding error {:.3f} mm, worst seam mismatch "
       "{:.3f} mm; wrote {}",
@@ -248,6 +256,7 @@ CommandRunner SetupResizeCommand(CLI::App& app) {
   app.add_option("--seed", o->resize.seed, "Random seed (same seed, same result)");
   app.add_option("--population", o->resize.population, "Individuals (thesis: 400)");
   app.add_option("--generations", o->resize.generations, "Generations (thesis: 200)");
+  app.add_option("--threads", o->resize.threads, "Threads for the fit (0 = all CPUs)");
   app.add_option("--seam-allowance", o->seam_allowance_mm, "Cut-line allowance in SVG/DXF (mm)");
   app.add_flag("--no-polish", o->no_polish, "Stop at the GA's pick (no constrained polish)");
   return [o](const GlobalOptions& global) { return RunResize(*o, global); };
