@@ -9,6 +9,10 @@
 //
 //   resize_cli_bench [--bespoke build/bespoke] [--shared ../shared]
 //                    [--population 400] [--generations 200] [--repeats 3]
+//                    [--compare OTHER/bespoke]
+//
+// --compare adds, in the same run, another build's `bespoke` (e.g. the
+// previous commit's) with all CPUs on the same cases.
 //
 // Cases: Valentina's men's shirt (the standard-size DXF with
 // eval/resize/data/maleshirt.sidecar.json, fitted to MaleShirt_big.vit;
@@ -78,6 +82,12 @@ Timing Best(const std::vector<std::string>& args, int repeats) {
   return best;
 }
 
+std::string Fixed(double v) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.2f", v);
+  return text;
+}
+
 void PrintLoad(const char* when) {
   double load[3] = {0, 0, 0};
   if (getloadavg(load, 3) > 0)
@@ -113,7 +123,7 @@ std::vector<Case> Cases(const fs::path& shared, const fs::path& scratch) {
 }
 
 int Main(int argc, char** argv) {
-  std::string bespoke = BESPOKE_BINARY, shared = BESPOKE_DEFAULT_SHARED_DIR;
+  std::string bespoke = BESPOKE_BINARY, shared = BESPOKE_DEFAULT_SHARED_DIR, compare;
   std::string population = "400", generations = "200";
   int repeats = 3;
   for (int i = 1; i + 1 < argc; i += 2) {
@@ -128,6 +138,8 @@ int Main(int argc, char** argv) {
       generations = value;
     else if (key == "--repeats")
       repeats = std::stoi(value);
+    else if (key == "--compare")
+      compare = value;
     else
       throw bespoke::InputError("unknown option " + key);
   }
@@ -138,9 +150,10 @@ int Main(int argc, char** argv) {
   PrintLoad("at start");
   std::printf("%s resize, population %s, generations %s, best of %d run(s)\n\n", bespoke.c_str(),
               population.c_str(), generations.c_str(), repeats);
+  if (!compare.empty()) std::printf("compared with %s (all CPUs)\n", compare.c_str());
   std::printf(
       "| case | wall s | CPU s | 1-thread wall s | 1-thread CPU s | speed-up (wall) | "
-      "<= 3 s |\n|---|---|---|---|---|---|---|\n");
+      "<= 3 s | compared wall s | compared CPU s |\n|---|---|---|---|---|---|---|---|---|\n");
   for (const Case& c : Cases(shared, scratch)) {
     std::vector<std::string> args = {bespoke, "--quiet", "resize"};
     args.insert(args.end(), c.input.begin(), c.input.end());
@@ -148,12 +161,19 @@ int Main(int argc, char** argv) {
          {std::string("--population"), population, std::string("--generations"), generations,
           std::string("-o"), (scratch / "out").string()})
       args.push_back(a);
+    std::string other = "- | -";
+    if (!compare.empty()) {
+      std::vector<std::string> other_args = args;
+      other_args[0] = compare;
+      const Timing t = Best(other_args, repeats);
+      other = Fixed(t.wall_s) + " | " + Fixed(t.cpu_s);
+    }
     const Timing all = Best(args, repeats);
     args.insert(args.end(), {"--threads", "1"});
     const Timing one = Best(args, repeats);
-    std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %s |\n", c.name.c_str(), all.wall_s,
+    std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %s | %s |\n", c.name.c_str(), all.wall_s,
                 all.cpu_s, one.wall_s, one.cpu_s, one.wall_s / all.wall_s,
-                all.wall_s <= 3.0 ? "yes" : "no");
+                all.wall_s <= 3.0 ? "yes" : "no", other.c_str());
     std::fflush(stdout);
   }
   std::printf("\n");
