@@ -213,7 +213,8 @@ Evolution Evolve(const ResizeOptions& options, const FitnessModel& model,
   const size_t n = static_cast<size_t>(options.population);
   // Parents in [0, n), offspring in [n, 2n); after the selection the
   // survivors move to the front and the rest keep their gene storage for
-  // the next offspring, so the loop does not allocate.
+  // the next offspring (a move swaps storage), so no gene vector is
+  // allocated in the loop.
   Population all(2 * n), sorted(2 * n);
   for (size_t i = 0; i < 2 * n; ++i) all[i].genes = start;
   for (size_t i = 1; i < n; ++i)
