@@ -1,8 +1,14 @@
-// `bespoke resize --pattern PATTERN|--design shirt|trousers --measurements MEAS.json
+// `bespoke resize --pattern PATTERN|--design shirt|trousers
+//                 --measurements MEAS.json|--scan SCAN
 //                 -o OUT_DIR [--sidecar SIDECAR.json] [--seed N] [--population 400]
-//                 [--generations 200] [--seam-allowance 10] [--no-polish]`
+//                 [--generations 200] [--threads 0] [--seam-allowance 10] [--no-polish]`
 // Fits a base pattern to a body's measurements with the multi-objective GA
-// of thesis chapter 4 (resize/ga/resize.h) and writes into OUT_DIR:
+// of thesis chapter 4 (resize/ga/resize.h). With --scan the measurements
+// are taken from the scan first, by the pipeline's single-scan job
+// (pipeline/batch/scan_job.h: read, clean, measure, as `bespoke measure`
+// and `bespoke run` do), in a scratch folder that is removed afterwards;
+// its measurements.json is written into OUT_DIR beside the fit. Writes into
+// OUT_DIR:
 //   fitted.json (Bespoke pattern), fitted.svg (1:1 mm, printable),
 //   fitted.dxf (DXF-ASTM D6673 layers), pareto_front.csv, report.json (with
 //   the settings used), report.txt (readable summary), convergence.png and
@@ -17,7 +23,12 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdint>
+#include <future>
+#include <random>
+#include <string>
 
+#include "pipeline/batch/scan_job.h"
 #include "pipeline/cli/commands.h"
 #include "pipeline/cli/progress_bar.h"
 #include "resize/designs/designs.h"
@@ -41,7 +52,8 @@ struct ResizeCommandOptions {
   std::filesystem::path pattern;            // base pattern file, or
   std::string design;                       // a built-in design
   std::filesystem::path sidecar;            // optional landmarks/seams/bindings
-  std::filesystem::path measurements;       // MEAS.json / TRUTH.json / a Valentina .vit
+  std::filesystem::path measurements;       // MEAS.json / TRUTH.json / a Valentina .vit, or
+  std::filesystem::path scan;               // a scan to measure first
   std::filesystem::path base_measurements;  // the body the base pattern was drafted for
   std::filesystem::path out_dir;
   ResizeOptions resize;
@@ -52,7 +64,8 @@ struct ResizeCommandOptions {
     if (pattern.empty() == design.empty())
       throw InputError("give exactly one of --pattern FILE and --design shirt|trousers");
     if (!sidecar.empty() && pattern.empty()) throw InputError("--sidecar needs --pattern");
-    if (measurements.empty()) throw InputError("--measurements is required");
+    if (measurements.empty() == scan.empty())
+      throw InputError("give exactly one of --measurements FILE and --scan SCAN");
     if (out_dir.empty()) throw InputError("-o OUT_DIR is required");
     if (!(seam_allowance_mm >= 0)) throw InputError("--seam-allowance must be >= 0 mm");
     resize.Check();
@@ -102,13 +115,59 @@ void WriteConvergence(const ResizeResult& r, const std::filesystem::path& file) 
   WriteChart(chart, file);
 }
 
-int RunResize(const ResizeCommandOptions& o, const GlobalOptions& global) {
-  o.Check();
+// A scratch folder for the scan job, removed with everything in it when
+// this goes out of scope (on success and on error alike).
+class ScratchDir {
+ public:
+  ScratchDir() {
+    std::random_device seed;
+    const std::string name = fmt::format("bespoke-resize-scan-{:016x}",
+                                         (std::uint64_t{seed()} << 32) ^ std::uint64_t{seed()});
+    path_ = std::filesystem::temp_directory_path() / name;
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// The scan's measurement document, taken by the single-scan job
+// without a design: read, clean, measure, with the defaults of `bespoke
+// measure`.
+nlohmann::json MeasureScan(const std::filesystem::path& scan, const ScratchDir& scratch,
+                           Progress* progress) {
+  ScanJobOptions job;
+  job.write_cleaned_cloud = false;
+  RunScanJob(job, scan, scratch.path(), progress);
+  return ReadJsonFile(scratch.path() / "measurements.json");
+}
+
+// The body's measurements from --measurements, or from --scan (then
+// `document` gets the scan's measurement document).
+MeasurementSet LoadBody(const ResizeCommandOptions& o, const ScratchDir& scratch,
+                        Progress* progress, nlohmann::json* document) {
+  if (!o.scan.empty()) {
+    *document = MeasureScan(o.scan, scratch, progress);
+    return MeasurementsFromJson(*document, o.scan.string() + " (its measurements)");
+  }
   std::vector<std::string> skipped;
   const MeasurementSet body = LoadMeasurements(o.measurements, &skipped);
   if (!skipped.empty())
     spdlog::info("{}: left out {} measurement(s) the catalogue does not know: {}",
                  o.measurements.string(), skipped.size(), fmt::join(skipped, ", "));
+  return body;
+}
+
+int RunResize(const ResizeCommandOptions& o, const GlobalOptions& global) {
+  o.Check();
+  ProgressBar bar(global.quiet);
+  // The pattern first: a bad pattern fails before the scan is measured.
   Pattern base = o.design.empty() ? LoadPattern(o.pattern, o.sidecar)
                                   : DraftDesign(o.design, BaseMeasurements(o.design));
   if (!o.base_measurements.empty()) {
@@ -117,22 +176,27 @@ int RunResize(const ResizeCommandOptions& o, const GlobalOptions& global) {
     ResolveKeptEase(o.base_measurements.string(), &base);
   }
   for (const std::string& note : base.notes) spdlog::info("import: {}", note);
+  const ScratchDir scratch;
+  nlohmann::json scan_document;
+  const MeasurementSet body = LoadBody(o, scratch, &bar, &scan_document);
+  const std::string body_source = o.scan.empty() ? o.measurements.string() : o.scan.string();
   CheckBindingsAgainst(base, body, o.design.empty() ? o.pattern.string() : "design " + o.design,
-                       o.measurements.string());
+                       body_source);
   CreateDirectories(o.out_dir);
   ResizeOptions options = o.resize;
   options.polish = !o.no_polish;
-  ProgressBar bar(global.quiet);
   const ResizeResult result = ResizePattern(options, base, body, &bar);
 
   const nlohmann::json settings = {{"pattern", o.pattern.string()},
                                    {"design", o.design},
                                    {"sidecar", o.sidecar.string()},
                                    {"measurements", o.measurements.string()},
+                                   {"scan", o.scan.string()},
                                    {"base_measurements", o.base_measurements.string()},
                                    {"seed", options.seed},
                                    {"population", options.population},
                                    {"generations", options.generations},
+                                   {"threads", options.threads},
                                    {"crossover_rate", options.crossover_rate},
                                    {"mutation_rate", options.mutation_rate},
                                    {"mutation_rate_step", options.mutation_rate_step},
@@ -140,6 +204,14 @@ int RunResize(const ResizeCommandOptions& o, const GlobalOptions& global) {
                                    {"tolerance_mm", options.tolerance_mm},
                                    {"seam_allowance_mm", o.seam_allowance_mm}};
   const nlohmann::json report = ResizeReportJson(base, body, result, settings);
+  // The two pictures (most of the writing time) are drawn on a second
+  // thread while the pattern files are written (after them with --threads 1).
+  const auto policy = options.threads == 1 ? std::launch::deferred : std::launch::async;
+  std::future<void> pictures = std::async(policy, [&] {
+    WriteConvergence(result, o.out_dir / "convergence.png");
+    WriteOverlay(base, result, o.out_dir / "overlay.png");
+  });
+  if (!o.scan.empty()) WriteJsonFile(o.out_dir / "measurements.json", scan_document);
   WritePatternJson(result.fitted, o.out_dir / "fitted.json");
   SvgOptions svg;
   svg.seam_allowance_mm = o.seam_allowance_mm;
@@ -150,8 +222,7 @@ int RunResize(const ResizeCommandOptions& o, const GlobalOptions& global) {
   WriteFileAtomically(o.out_dir / "pareto_front.csv", ParetoFrontCsv(result));
   WriteJsonFile(o.out_dir / "report.json", report);
   WriteFileAtomically(o.out_dir / "report.txt", ResizeReportText(report));
-  WriteConvergence(result, o.out_dir / "convergence.png");
-  WriteOverlay(base, result, o.out_dir / "overlay.png");
+  pictures.get();
   spdlog::info(
       "fitted '{}' in {:.2f} s: worst binding error {:.3f} mm, worst seam mismatch "
       "{:.3f} mm; wrote {}",
@@ -174,8 +245,10 @@ CommandRunner SetupResizeCommand(CLI::App& app) {
   app.add_option("--sidecar", o->sidecar,
                  "JSON adding landmarks, seams and bindings to a DXF/GarmentCode pattern");
   app.add_option("--measurements", o->measurements,
-                 "MEAS.json or TRUTH.json (mm), or a Valentina .vit file")
-      ->required();
+                 "MEAS.json or TRUTH.json (mm), or a Valentina .vit file");
+  app.add_option("--scan", o->scan,
+                 "A body scan instead: measured as `bespoke measure` does (measurements.json "
+                 "is written beside the fit)");
   app.add_option("--base-measurements", o->base_measurements,
                  "The body the base pattern was drafted for (.json or .vit): bindings without "
                  "an ease of their own keep the base's ease at that body");
@@ -183,6 +256,7 @@ CommandRunner SetupResizeCommand(CLI::App& app) {
   app.add_option("--seed", o->resize.seed, "Random seed (same seed, same result)");
   app.add_option("--population", o->resize.population, "Individuals (thesis: 400)");
   app.add_option("--generations", o->resize.generations, "Generations (thesis: 200)");
+  app.add_option("--threads", o->resize.threads, "Threads for the fit (0 = all CPUs)");
   app.add_option("--seam-allowance", o->seam_allowance_mm, "Cut-line allowance in SVG/DXF (mm)");
   app.add_flag("--no-polish", o->no_polish, "Stop at the GA's pick (no constrained polish)");
   return [o](const GlobalOptions& global) { return RunResize(*o, global); };

@@ -3,13 +3,15 @@
 // size (every measurement the design binds scaled by 1.08) gets a fitted
 // pattern whose bindings and seams match within the report's tolerance;
 // a missing measurement, an unknown design or a malformed file exits 1
-// naming the problem and leaves no output folder behind.
+// naming the problem and leaves no output folder behind. A generated body
+// scanned by the virtual scanner is measured and fitted by one command.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "resize/pattern/measurements.h"
 #include "tests/support/draft_measurements.h"
 #include "tests/support/run_command.h"
 #include "tests/support/test_support.h"
@@ -118,6 +120,62 @@ TEST(ResizeCli, FitsAValentinaDxfPieceWithASidecar) {
   EXPECT_THAT(wrong.err, HasSubstr("'Sleeve'"));
   EXPECT_THAT(wrong.err, HasSubstr("'Kurze Hinterhose'"));
   EXPECT_FALSE(std::filesystem::exists(dir / "w"));
+}
+
+// synth-body + scan-sim give a scan; `resize --scan` measures it (the
+// pipeline's scan job) and fits the shirt to those measurements: the
+// measurement document is written beside the fit, and every binding's
+// target is the scan's value plus the design's ease.
+TEST(ResizeCli, FitsADesignToAScanFromOneCommand) {
+  TempDir dir;
+  auto r = Bespoke(
+      "synth-body --seed 4 --param torso_segments=48 --param arm_segments=32 "
+      "--param ring_spacing_mm=30 --skip-reference -o " +
+          Quote(dir / "body.obj") + " --truth " + Quote(dir / "truth.json"),
+      dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = Bespoke("scan-sim " + Quote(dir / "body.obj") + " -o " + Quote(dir / "scan.ply") +
+                  " --seed 5 --resolution 160x120 --units mm",
+              dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = Bespoke("resize --design shirt --scan " + Quote(dir / "scan.ply") +
+                  " --population 40 --generations 20 -o " + Quote(dir / "fit"),
+              dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* f : {"measurements.json", "fitted.json", "fitted.svg", "fitted.dxf",
+                        "report.json", "report.txt"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / "fit" / f)) << f;
+  }
+  const MeasurementSet measured = ReadMeasurements(dir / "fit" / "measurements.json");
+  const nlohmann::json report = nlohmann::json::parse(ReadText(dir / "fit" / "report.json"));
+  EXPECT_EQ(report.at("settings").at("scan").get<std::string>(), (dir / "scan.ply").string());
+  ASSERT_FALSE(report.at("measurements").empty());
+  for (const auto& m : report.at("measurements")) {
+    const std::string name = m.at("measurement");
+    if (name.front() == '(') continue;  // fixed or following another binding
+    ASSERT_EQ(measured.count(name), 1u) << name;
+    EXPECT_DOUBLE_EQ(m.at("body_mm").get<double>(), measured.at(name)) << name;
+  }
+}
+
+// A scan that cannot be read: exit 1 naming it, no output folder, and
+// --scan with --measurements is refused.
+TEST(ResizeCli, BadScanExitsOneNamingTheFileAndWritesNothing) {
+  TempDir dir;
+  std::ofstream(dir / "broken.ply") << "ply\nformat ascii 1.0\nelement vertex 5\n";
+  auto r = Bespoke(
+      "resize --design shirt --scan " + Quote(dir / "broken.ply") + " -o " + Quote(dir / "out"),
+      dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("broken.ply"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  std::ofstream(dir / "m.json") << R"({"measurements": []})";
+  r = Bespoke("resize --design shirt --scan " + Quote(dir / "broken.ply") + " --measurements " +
+                  Quote(dir / "m.json") + " -o " + Quote(dir / "out"),
+              dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("--scan"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 
 TEST(ResizeCli, BadInputExitsOneNamingTheProblemAndWritesNothing) {

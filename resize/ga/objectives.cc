@@ -18,6 +18,44 @@ double Turning(const Outline& o, const std::vector<int>& idx, size_t k) {
   return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
 }
 
+}  // namespace
+
+double FastAtan2(double y, double x) {
+  constexpr double kTan15 = 0.26794919243112270;  // tan(pi / 12)
+  constexpr double kSqrt3 = 1.7320508075688772;
+  const double ax = std::abs(x), ay = std::abs(y);
+  const double big = std::max(ax, ay), small = std::min(ax, ay);
+  if (!(big > 0) || !std::isfinite(big)) return std::atan2(y, x);
+  double r = small / big, base = 0;  // atan(small / big) in [0, pi / 4]
+  if (r > kTan15) {  // atan(r) = pi / 6 + atan((r sqrt3 - 1) / (r + sqrt3)), |that| <= tan(pi / 12)
+    r = (r * kSqrt3 - 1) / (r + kSqrt3);
+    base = M_PI / 6;
+  }
+  // The arctangent's series to r^21: the next term is below 3e-15 for |r| <= tan(pi / 12).
+  const double r2 = r * r;
+  double p = 1.0 / 21;
+  for (int k = 9; k >= 0; --k) p = p * -r2 + 1.0 / (2 * k + 1);
+  double a = base + r * p;
+  if (ay > ax) a = M_PI / 2 - a;
+  if (x < 0) a = M_PI - a;
+  return std::signbit(y) ? -a : a;
+}
+
+namespace {
+
+// Turning angle at every vertex of a closed outline (rad, left positive),
+// as TurningAngles computes it (with FastAtan2), into `out` (resized only when its size
+// differs, so a buffer reused across calls is not reallocated).
+void TurningInto(const Outline& o, Eigen::VectorXd* out) {
+  const int n = static_cast<int>(o.rows());
+  out->resize(n);
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d a = o.row(i) - o.row((i - 1 + n) % n);
+    const Eigen::Vector2d b = o.row((i + 1) % n) - o.row(i);
+    (*out)[i] = FastAtan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+  }
+}
+
 double WrapAngle(double a) {
   while (a > M_PI) a -= 2 * M_PI;
   while (a < -M_PI) a += 2 * M_PI;
@@ -161,6 +199,8 @@ FitnessModel::FitnessModel(const Pattern& base, const BlockSet& blocks, const Me
     d.a = SeamIndices(seam.a, static_cast<int>(oa.rows()));
     d.b = SeamIndices(seam.b, static_cast<int>(ob.rows()));
     d.ease = seam.ease_mm;
+    d.forward_a = seam.a.forward;
+    d.forward_b = seam.b.forward;
     std::vector<double> la, lb;
     SeamEdges(oa, d.a, &la);
     SeamEdges(ob, d.b, &lb);
@@ -275,9 +315,15 @@ std::vector<FitnessModel::TurningBound> FitnessModel::CurveViolations(
 }
 
 Objectives FitnessModel::Evaluate(const Eigen::VectorXd& genes, bool check_simple) const {
+  // Per-thread buffers: evaluation runs for every individual of every
+  // generation, in parallel, and must not allocate once they have grown.
   thread_local std::vector<Outline> outlines;
+  thread_local std::vector<Eigen::VectorXd> turning;
   thread_local std::vector<double> la, lb;
   Outlines(genes, &outlines);
+  turning.resize(outlines.size());
+  for (size_t p = 0; p < outlines.size(); ++p)
+    if (driven_[p]) TurningInto(outlines[p], &turning[p]);
   Objectives o;
   for (size_t b = 0; b < terms_.size(); ++b) {
     double value = 0;
@@ -295,10 +341,15 @@ Objectives FitnessModel::Evaluate(const Eigen::VectorXd& genes, bool check_simpl
       edge_error += std::abs(la[k] - lb[k] - d.edge_target[k]);
       total += la[k] - lb[k];
     }
+    // A seam side walks its outline's vertices one by one, so its turning
+    // at an inner point is the outline's there, negated when it walks
+    // backwards (the same atan2 of the negated cross product).
+    const Eigen::VectorXd& ta = turning[d.piece_a];
+    const Eigen::VectorXd& tb = turning[d.piece_b];
+    const double sa = d.forward_a ? 1.0 : -1.0, sb = d.forward_b ? 1.0 : -1.0;
     double angle_error = 0;
     for (size_t k = 1; k + 1 < d.a.size(); ++k) {
-      const double diff =
-          Turning(outlines[d.piece_a], d.a, k) - Turning(outlines[d.piece_b], d.b, k);
+      const double diff = sa * ta[d.a[k]] - sb * tb[d.b[k]];
       angle_error += std::abs(WrapAngle(diff - d.angle_base[k - 1])) * kDeg;
     }
     o.seam += (angle_error + edge_error) / static_cast<double>(d.a.size());
@@ -308,12 +359,12 @@ Objectives FitnessModel::Evaluate(const Eigen::VectorXd& genes, bool check_simpl
   int vertices = 0, critical = 0;
   for (size_t p = 0; p < outlines.size(); ++p) {
     if (!driven_[p]) continue;
-    const Eigen::VectorXd turning = TurningAngles(outlines[p]);
-    for (Eigen::Index v = 0; v < turning.size(); ++v)
-      o.shape_deg += std::abs(WrapAngle(turning[v] - base_turning_[p][v])) * kDeg;
-    vertices += static_cast<int>(turning.size());
+    const Eigen::VectorXd& t = turning[p];
+    for (Eigen::Index v = 0; v < t.size(); ++v)
+      o.shape_deg += std::abs(WrapAngle(t[v] - base_turning_[p][v])) * kDeg;
+    vertices += static_cast<int>(t.size());
     for (int c : base_.pieces[p].critical)
-      o.critical_shape_deg += std::abs(WrapAngle(turning[c] - base_turning_[p][c])) * kDeg;
+      o.critical_shape_deg += std::abs(WrapAngle(t[c] - base_turning_[p][c])) * kDeg;
     critical += static_cast<int>(base_.pieces[p].critical.size());
     if (check_simple && FindSelfIntersection(outlines[p]).first >= 0) o.simple = false;
   }

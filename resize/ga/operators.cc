@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace bespoke {
 namespace {
@@ -12,17 +13,30 @@ double Uniform(Rng& rng) { return std::uniform_real_distribution<double>(0.0, 1.
 
 void UniformCrossover(const BlockSet& blocks, double min_gap_mm, Rng& rng, Eigen::VectorXd* a,
                       Eigen::VectorXd* b) {
+  thread_local std::vector<int> swapped;  // control points swapped in the current block
   for (const Block& block : blocks.blocks) {
     const int n = block.nu * block.nv;
-    const Eigen::VectorXd a0 = a->segment(block.offset, 2 * n),
-                          b0 = b->segment(block.offset, 2 * n);
+    swapped.clear();
     for (int k = 0; k < n; ++k) {
       if (Uniform(rng) < 0.5) continue;
       std::swap((*a)[block.offset + 2 * k], (*b)[block.offset + 2 * k]);
       std::swap((*a)[block.offset + 2 * k + 1], (*b)[block.offset + 2 * k + 1]);
+      swapped.push_back(block.offset + 2 * k);
     }
-    if (!BlockValid(block, a->data(), min_gap_mm)) a->segment(block.offset, 2 * n) = a0;
-    if (!BlockValid(block, b->data(), min_gap_mm)) b->segment(block.offset, 2 * n) = b0;
+    // A child whose grid folds keeps its parent's block: the parent's
+    // values at the swapped points are now the other child's.
+    const bool a_ok = BlockValid(block, a->data(), min_gap_mm);
+    const bool b_ok = BlockValid(block, b->data(), min_gap_mm);
+    if (a_ok && b_ok) continue;
+    for (int g : swapped)
+      for (int c = g; c < g + 2; ++c) {
+        if (!a_ok && !b_ok)
+          std::swap((*a)[c], (*b)[c]);
+        else if (!a_ok)
+          (*a)[c] = (*b)[c];
+        else
+          (*b)[c] = (*a)[c];
+      }
   }
 }
 
@@ -41,7 +55,8 @@ void NonUniformMutation(const BlockSet& blocks, const MutationParams& p, Rng& rn
       return along_u ? block.offset + 2 * (line * block.nu + k)
                      : block.offset + 2 * (k * block.nu + line) + 1;
     };
-    Eigen::VectorXd original(count);
+    thread_local std::vector<double> original;
+    original.resize(count);
     for (int k = 0; k < count; ++k) original[k] = (*genes)[index(k)];
     bool valid = false;
     for (int attempt = 0; attempt < 20 && !valid; ++attempt) {

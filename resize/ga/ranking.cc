@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
 #include <pagmo/utils/multi_objective.hpp>
@@ -18,34 +19,37 @@ bool Less(double a, double b) {
   return a < b;
 }
 
-// 1 when a dominates b, -1 when b dominates a, 0 otherwise; `Lt` is the
-// order (plain < when no objective is NaN, Less otherwise).
-template <typename Lt>
-int Dominance(const ObjectivePoint& a, const ObjectivePoint& b, Lt lt) {
-  bool a_better = false, b_better = false;
-  for (int k = 0; k < 3; ++k) {
-    if (lt(a[k], b[k])) a_better = true;
-    if (lt(b[k], a[k])) b_better = true;
-  }
-  if (a_better == b_better) return 0;
-  return a_better ? 1 : -1;
-}
+// Who dominates whom, as one bit row per point: bit j of row i is set when
+// point i dominates point j; `count[j]` is how many points dominate j.
+// Branch-free over the pairs (the outcome of a comparison is not
+// predictable), every pair compared once; `Lt` is the order (plain < when
+// no objective is NaN, Less otherwise).
+struct DominanceBits {
+  size_t words = 0;                 // 64-bit words per row
+  std::vector<std::uint64_t> bits;  // n rows of `words`
+  std::vector<int> count;
+};
 
 template <typename Lt>
-void DominanceLists(const std::vector<ObjectivePoint>& points, Lt lt,
-                    std::vector<std::vector<int>>* dominated, std::vector<int>* count) {
-  const int n = static_cast<int>(points.size());
-  for (int i = 0; i < n; ++i)
-    for (int j = i + 1; j < n; ++j) {
-      const int d = Dominance(points[i], points[j], lt);
-      if (d > 0) {
-        (*dominated)[i].push_back(j);
-        ++(*count)[j];
-      } else if (d < 0) {
-        (*dominated)[j].push_back(i);
-        ++(*count)[i];
-      }
+void Dominance(const std::vector<ObjectivePoint>& points, Lt lt, DominanceBits* d) {
+  const size_t n = points.size();
+  d->words = (n + 63) / 64;
+  d->bits.assign(n * d->words, 0);
+  d->count.assign(n, 0);
+  for (size_t i = 0; i < n; ++i) {
+    const ObjectivePoint& a = points[i];
+    std::uint64_t* row_i = &d->bits[i * d->words];
+    for (size_t j = i + 1; j < n; ++j) {
+      const ObjectivePoint& b = points[j];
+      const bool a_better = lt(a[0], b[0]) | lt(a[1], b[1]) | lt(a[2], b[2]);
+      const bool b_better = lt(b[0], a[0]) | lt(b[1], a[1]) | lt(b[2], a[2]);
+      const std::uint64_t i_wins = a_better & !b_better, j_wins = b_better & !a_better;
+      row_i[j >> 6] |= i_wins << (j & 63);
+      d->bits[j * d->words + (i >> 6)] |= j_wins << (i & 63);
+      d->count[j] += static_cast<int>(i_wins);
+      d->count[i] += static_cast<int>(j_wins);
     }
+  }
 }
 
 // a > b with NaN above infinity (a crowding distance is NaN when an
@@ -60,30 +64,33 @@ bool Greater(double a, double b) {
 
 Fronts SortFronts(const std::vector<ObjectivePoint>& points) {
   const int n = static_cast<int>(points.size());
-  std::vector<std::vector<int>> dominated(n);  // the points each point dominates, ascending
-  std::vector<int> count(n, 0);                // how many points dominate each point
   bool any_nan = false;
   for (const ObjectivePoint& p : points)
     for (double v : p) any_nan = any_nan || std::isnan(v);
+  DominanceBits d;
   if (any_nan)
-    DominanceLists(points, Less, &dominated, &count);
+    Dominance(points, Less, &d);
   else
-    DominanceLists(
-        points, [](double a, double b) { return a < b; }, &dominated, &count);
-  // dominated[j] got its entries i < j before those k > j: ascending.
+    Dominance(
+        points, [](double a, double b) { return a < b; }, &d);
   Fronts f;
   f.rank.assign(n, 0);
   std::vector<int> current;
   for (int i = 0; i < n; ++i)
-    if (count[i] == 0) current.push_back(i);
+    if (d.count[i] == 0) current.push_back(i);
   int rank = 0;
   while (!current.empty()) {
     f.fronts.push_back(current);
     std::vector<int> next;
     for (int i : current) {
       f.rank[i] = rank;
-      for (int j : dominated[i])
-        if (--count[j] == 0) next.push_back(j);
+      // The points i dominates, ascending (pagmo's order).
+      const std::uint64_t* row = &d.bits[static_cast<size_t>(i) * d.words];
+      for (size_t w = 0; w < d.words; ++w)
+        for (std::uint64_t bits = row[w]; bits != 0; bits &= bits - 1) {
+          const int j = static_cast<int>(64 * w + __builtin_ctzll(bits));
+          if (--d.count[j] == 0) next.push_back(j);
+        }
     }
     current = std::move(next);
     ++rank;
@@ -98,9 +105,11 @@ std::vector<double> CrowdingDistance(const std::vector<ObjectivePoint>& front) {
   return pagmo::crowding_distance(points);
 }
 
-std::vector<int> SelectBest(const std::vector<ObjectivePoint>& points, int n) {
+std::vector<int> SelectBest(const std::vector<ObjectivePoint>& points, int n,
+                            std::vector<int>* rank) {
   std::vector<int> chosen;
-  for (const std::vector<int>& front : SortFronts(points).fronts) {
+  const Fronts fronts = SortFronts(points);
+  for (const std::vector<int>& front : fronts.fronts) {
     const int room = n - static_cast<int>(chosen.size());
     if (static_cast<int>(front.size()) <= room) {
       chosen.insert(chosen.end(), front.begin(), front.end());
@@ -116,6 +125,10 @@ std::vector<int> SelectBest(const std::vector<ObjectivePoint>& points, int n) {
               [&](size_t a, size_t b) { return Greater(crowding[a], crowding[b]); });
     for (int k = 0; k < room; ++k) chosen.push_back(front[order[k]]);
     break;
+  }
+  if (rank) {
+    rank->clear();
+    for (int i : chosen) rank->push_back(fronts.rank[i]);
   }
   return chosen;
 }

@@ -30,8 +30,11 @@ Fronts SortFronts(const std::vector<ObjectivePoint>& points);
 // at the ends of every objective; a front of 1 or 2 is all ends).
 std::vector<double> CrowdingDistance(const std::vector<ObjectivePoint>& front);
 
-// Indices of the best `n` of `points` (n <= #points).
-std::vector<int> SelectBest(const std::vector<ObjectivePoint>& points, int n);
+// Indices of the best `n` of `points` (n <= #points). With `rank`, also
+// each chosen point's front (rank[k] for chosen[k]); whole fronts are
+// chosen before a later one, so that is also its front among the chosen.
+std::vector<int> SelectBest(const std::vector<ObjectivePoint>& points, int n,
+                            std::vector<int>* rank = nullptr);
 
 }  // namespace bespoke
 

@@ -58,6 +58,20 @@ TEST(Ranking, SelectionMatchesPagmo) {
   }
 }
 
+// The ranks SelectBest gives are the chosen points' fronts among themselves.
+TEST(Ranking, SelectionRanksAreTheFrontsOfTheChosen) {
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    const std::vector<ObjectivePoint> points = RandomPoints(200, seed);
+    for (int n : {1, 37, 100, 199}) {
+      std::vector<int> rank;
+      const std::vector<int> chosen = SelectBest(points, n, &rank);
+      std::vector<ObjectivePoint> kept;
+      for (int i : chosen) kept.push_back(points[i]);
+      EXPECT_EQ(rank, SortFronts(kept).rank) << seed << " " << n;
+    }
+  }
+}
+
 TEST(Ranking, ADominatedPointIsInALaterFront) {
   const Fronts f = SortFronts({{1, 1, 1}, {2, 2, 2}, {0, 3, 1}, {1, 1, 1}});
   EXPECT_EQ(f.rank, (std::vector<int>{0, 1, 0, 0}));

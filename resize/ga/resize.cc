@@ -1,9 +1,12 @@
 #include "resize/ga/resize.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <limits>
 
 #include "resize/ga/grader.h"
@@ -38,13 +41,14 @@ struct Ranking {
   std::vector<double> crowding;
 };
 
-Ranking Rank(const Population& pop) {
+// Of the first `n` individuals of `pop`.
+Ranking Rank(const Population& pop, size_t n) {
   std::vector<ObjectivePoint> points;
-  for (const Individual& ind : pop) points.push_back(Point(ind.objectives));
+  for (size_t i = 0; i < n; ++i) points.push_back(Point(pop[i].objectives));
   const Fronts fronts = SortFronts(points);
   Ranking r;
   r.rank = fronts.rank;
-  r.crowding.assign(pop.size(), std::numeric_limits<double>::infinity());
+  r.crowding.assign(n, std::numeric_limits<double>::infinity());
   for (const std::vector<int>& front : fronts.fronts) {
     std::vector<ObjectivePoint> front_points;
     for (int i : front) front_points.push_back(points[i]);
@@ -104,12 +108,14 @@ size_t Pick(const FitnessModel& model, const Population& pop, const Ranking& r, 
   return best == pop.size() ? 0 : best;
 }
 
+// Ages the first `n` individuals of `pop`, the parents of the next
+// generation; `rank`: each one's front (from the selection that chose them).
 void Age(const ResizeOptions& options, const BlockSet& blocks, const FitnessModel& model,
-         const MutationParams& mutation, Rng& rng, Population* pop) {
-  const Ranking r = Rank(*pop);
+         const MutationParams& mutation, const std::vector<int>& rank, Rng& rng, size_t n,
+         Population* pop) {
   // Scalar cost for Eq 4.2: sum of the objectives normalised over the population.
-  Eigen::MatrixXd f(pop->size(), 3);
-  for (size_t i = 0; i < pop->size(); ++i) {
+  Eigen::MatrixXd f(n, 3);
+  for (size_t i = 0; i < n; ++i) {
     const auto p = Point((*pop)[i].objectives);
     f.row(i) << p[0], p[1], p[2];
   }
@@ -117,25 +123,35 @@ void Age(const ResizeOptions& options, const BlockSet& blocks, const FitnessMode
                            span = (f.colwise().maxCoeff() - lo).cwiseMax(1e-12);
   const Eigen::VectorXd cost =
       ((f.rowwise() - lo).array().rowwise() / span.array()).rowwise().sum();
+  const double cost_min = cost.minCoeff(), cost_max = cost.maxCoeff(), cost_mean = cost.mean();
   std::vector<size_t> first;
-  for (size_t i = 0; i < pop->size(); ++i)
-    if (r.rank[i] == 0) first.push_back(i);
-  std::vector<size_t> reborn;
-  for (size_t i = 0; i < pop->size(); ++i) {
+  for (size_t i = 0; i < n; ++i)
+    if (rank[i] == 0) first.push_back(i);
+  // The dead are reborn as mutants of first-front members; each draws its
+  // mutation from a generator of its own (seeded in order from the run's),
+  // so they are mutated and evaluated in parallel.
+  struct Rebirth {
+    size_t individual, parent;
+    uint64_t seed;
+  };
+  std::vector<Rebirth> reborn;
+  for (size_t i = 0; i < n; ++i) {
     Individual& ind = (*pop)[i];
     ++ind.age;
-    const double life = LifeSpan(cost[i], cost.minCoeff(), cost.maxCoeff(), cost.mean(),
-                                 options.life_min, options.life_max);
+    const double life =
+        LifeSpan(cost[i], cost_min, cost_max, cost_mean, options.life_min, options.life_max);
     // Deviation: the first front never dies, or the best answer could be lost.
-    if (r.rank[i] == 0 || ind.age <= life) continue;
+    if (rank[i] == 0 || ind.age <= life) continue;
     const size_t parent = first[std::uniform_int_distribution<size_t>(0, first.size() - 1)(rng)];
-    ind.genes = (*pop)[parent].genes;
-    NonUniformMutation(blocks, mutation, rng, &ind.genes);
-    ind.age = 0;
-    reborn.push_back(i);
+    reborn.push_back({i, parent, rng()});
   }
   tbb::parallel_for(size_t(0), reborn.size(), [&](size_t k) {
-    (*pop)[reborn[k]].objectives = model.Evaluate((*pop)[reborn[k]].genes);
+    Individual& ind = (*pop)[reborn[k].individual];
+    Rng own(reborn[k].seed);
+    ind.genes = (*pop)[reborn[k].parent].genes;
+    NonUniformMutation(blocks, mutation, own, &ind.genes);
+    ind.age = 0;
+    ind.objectives = model.Evaluate(ind.genes);
   });
 }
 
@@ -146,6 +162,7 @@ void ResizeOptions::Check() const {
     throw InputError("--population must be even and at least 8 (got " + std::to_string(population) +
                      ")");
   if (generations < 0) throw InputError("--generations must be >= 0");
+  if (threads < 0) throw InputError("--threads must be >= 0 (0 = all CPUs)");
   if (crossover_rate < 0 || crossover_rate > 1 || mutation_rate < 0 || mutation_rate > 1)
     throw InputError("crossover and mutation rates must be in [0, 1]");
   if (!(mutation_range > 0) || noise_sigma_mm < 0 || !(life_min > 0) || life_max < life_min ||
@@ -194,13 +211,15 @@ Evolution Evolve(const ResizeOptions& options, const FitnessModel& model,
   const BlockSet& blocks = model.blocks();
   Rng rng(options.seed);
   const size_t n = static_cast<size_t>(options.population);
-  Population pop(n);
-  for (size_t i = 0; i < n; ++i) {
-    pop[i].genes = start;
-    if (i > 0)
-      AddGaussianNoise(blocks, options.noise_sigma_mm, options.min_gap_mm, rng, &pop[i].genes);
-  }
-  EvaluateRange(model, &pop, 0, n);
+  // Parents in [0, n), offspring in [n, 2n); after the selection the
+  // survivors move to the front and the rest keep their gene storage for
+  // the next offspring (a move swaps storage), so no gene vector is
+  // allocated in the loop.
+  Population all(2 * n), sorted(2 * n);
+  for (size_t i = 0; i < 2 * n; ++i) all[i].genes = start;
+  for (size_t i = 1; i < n; ++i)
+    AddGaussianNoise(blocks, options.noise_sigma_mm, options.min_gap_mm, rng, &all[i].genes);
+  EvaluateRange(model, &all, 0, n);
   ProgressBegin(progress, "evolving", options.generations);
   MutationParams mutation;
   mutation.max_generations = std::max(options.generations, 1);
@@ -208,49 +227,66 @@ Evolution Evolve(const ResizeOptions& options, const FitnessModel& model,
   mutation.range_fraction = options.mutation_range;
   mutation.min_gap_mm = options.min_gap_mm;
   Evolution evolution;
+  std::vector<ObjectivePoint> points(2 * n);
+  std::vector<int> rank;
+  std::vector<char> kept(2 * n);
+  std::vector<uint64_t> pair_seeds(n / 2);
   for (int gen = 0; gen < options.generations; ++gen) {
     mutation.generation = gen;
     const double mutation_rate = std::max(options.mutation_rate_min,
                                           options.mutation_rate - options.mutation_rate_step * gen);
-    const Ranking ranking = Rank(pop);
-    Population next = pop;
-    next.resize(2 * n);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    for (size_t k = 0; k < n; k += 2) {
+    const Ranking ranking = Rank(all, n);
+    // Each mating pair draws from a generator of its own, seeded in order
+    // from the run's: the pairs are bred and evaluated in parallel and the
+    // result does not depend on the thread count.
+    for (uint64_t& s : pair_seeds) s = rng();
+    tbb::parallel_for(size_t(0), n / 2, [&](size_t pair) {
+      Rng pair_rng(pair_seeds[pair]);
+      std::uniform_real_distribution<double> u(0.0, 1.0);
       // Algorithm 7's parents an index interval apart: the mother by crowded
       // tournament, the father delta places after her, delta random.
-      const size_t mother = Tournament(ranking, rng);
-      const size_t delta = std::uniform_int_distribution<size_t>(1, n / 4)(rng);
-      Individual& a = next[n + k];
-      Individual& b = next[n + k + 1];
-      a = Individual{pop[mother].genes, {}, 0};
-      b = Individual{pop[(mother + delta) % n].genes, {}, 0};
-      if (u(rng) < options.crossover_rate)
-        UniformCrossover(blocks, options.min_gap_mm, rng, &a.genes, &b.genes);
-      if (u(rng) < mutation_rate) NonUniformMutation(blocks, mutation, rng, &a.genes);
-      if (u(rng) < mutation_rate) NonUniformMutation(blocks, mutation, rng, &b.genes);
+      const size_t mother = Tournament(ranking, pair_rng);
+      const size_t delta = std::uniform_int_distribution<size_t>(1, n / 4)(pair_rng);
+      Individual& a = all[n + 2 * pair];
+      Individual& b = all[n + 2 * pair + 1];
+      a.genes = all[mother].genes;
+      b.genes = all[(mother + delta) % n].genes;
+      a.age = b.age = 0;
+      if (u(pair_rng) < options.crossover_rate)
+        UniformCrossover(blocks, options.min_gap_mm, pair_rng, &a.genes, &b.genes);
+      if (u(pair_rng) < mutation_rate) NonUniformMutation(blocks, mutation, pair_rng, &a.genes);
+      if (u(pair_rng) < mutation_rate) NonUniformMutation(blocks, mutation, pair_rng, &b.genes);
+      a.objectives = model.Evaluate(a.genes);
+      b.objectives = model.Evaluate(b.genes);
+    });
+    for (size_t i = 0; i < 2 * n; ++i) points[i] = Point(all[i].objectives);
+    const std::vector<int> keep = SelectBest(points, static_cast<int>(n), &rank);
+    std::fill(kept.begin(), kept.end(), 0);
+    for (size_t i = 0; i < n; ++i) {
+      sorted[i] = std::move(all[keep[i]]);
+      kept[keep[i]] = 1;
     }
-    EvaluateRange(model, &next, n, 2 * n);
-    std::vector<ObjectivePoint> points;
-    for (const Individual& ind : next) points.push_back(Point(ind.objectives));
-    const std::vector<int> keep = SelectBest(points, static_cast<int>(n));
-    for (size_t i = 0; i < n; ++i) pop[i] = std::move(next[keep[i]]);
-    Age(options, blocks, model, mutation, rng, &pop);
+    for (size_t i = 0, spare = n; i < 2 * n; ++i)
+      if (!kept[i]) sorted[spare++] = std::move(all[i]);
+    std::swap(all, sorted);
+    Age(options, blocks, model, mutation, rank, rng, n, &all);
     GenerationStats stats;
     stats.generation = gen + 1;
     stats.best_measurement_mm = stats.best_seam = stats.best_shape_deg =
         std::numeric_limits<double>::infinity();
-    for (const Individual& ind : pop) {
-      stats.best_measurement_mm =
-          std::min(stats.best_measurement_mm, ind.objectives.measurement_mm);
-      stats.best_seam = std::min(stats.best_seam, ind.objectives.seam);
-      stats.best_shape_deg = std::min(stats.best_shape_deg, ind.objectives.shape_deg);
+    for (size_t i = 0; i < n; ++i) {
+      const Objectives& o = all[i].objectives;
+      stats.best_measurement_mm = std::min(stats.best_measurement_mm, o.measurement_mm);
+      stats.best_seam = std::min(stats.best_seam, o.seam);
+      stats.best_shape_deg = std::min(stats.best_shape_deg, o.shape_deg);
     }
     evolution.history.push_back(stats);
     ProgressUpdate(progress, gen + 1);
   }
+  all.resize(n);
+  const Population& pop = all;
   ProgressEnd(progress);
-  const Ranking ranking = Rank(pop);
+  const Ranking ranking = Rank(pop, n);
   for (size_t i = 0; i < n; ++i)
     if (ranking.rank[i] == 0) evolution.front.push_back(pop[i].objectives);
   if (!evolution.history.empty())
@@ -259,11 +295,8 @@ Evolution Evolve(const ResizeOptions& options, const FitnessModel& model,
   return evolution;
 }
 
-}  // namespace
-
-ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& given_base,
-                           const MeasurementSet& given, Progress* progress) {
-  options.Check();
+ResizeResult Resize(const ResizeOptions& options, const Pattern& given_base,
+                    const MeasurementSet& given, Progress* progress) {
   MeasurementSet body = given;
   AddDerivedMeasurements(&body, "the measurements");
   Pattern full = given_base;
@@ -310,21 +343,25 @@ ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& given_ba
     // tolerance, simple outlines) with the least shape change from the base
     // (the thesis's criterion); the graded start wins ties, so the GA's
     // noise is kept only where it lowers the shape change.
-    Eigen::VectorXd polished = graded;
-    result.polish = Polish(options.polish_options, model, &polished);
+    // The two projections are independent: they run side by side.
+    Eigen::VectorXd polished = graded, from_ga = genes;
+    PolishReport from_ga_report;
+    tbb::parallel_invoke([&] { result.polish = Polish(options.polish_options, model, &polished); },
+                         [&] {
+                           if (options.generations > 0)
+                             from_ga_report = Polish(options.polish_options, model, &from_ga);
+                         });
     result.polish_start = "graded";
     if (options.generations > 0) {
       auto ok = [&](const PolishReport& r, const Objectives& o) {
         return r.max_constraint_after_mm <= options.tolerance_mm && o.simple;
       };
       const Objectives from_graded = model.Evaluate(polished, true);
-      Eigen::VectorXd from_ga = genes;
-      const PolishReport report = Polish(options.polish_options, model, &from_ga);
       const Objectives o = model.Evaluate(from_ga, true);
-      if (ok(report, o) &&
+      if (ok(from_ga_report, o) &&
           (!ok(result.polish, from_graded) || o.shape_deg < from_graded.shape_deg)) {
         polished = from_ga;
-        result.polish = report;
+        result.polish = from_ga_report;
         result.polish_start = "ga";
       }
     }
@@ -338,6 +375,16 @@ ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& given_ba
   result.achieved_mm = model.Achieved(genes);
   result.seam_mismatch_mm = model.SeamMismatch(genes);
   return result;
+}
+
+}  // namespace
+
+ResizeResult ResizePattern(const ResizeOptions& options, const Pattern& given_base,
+                           const MeasurementSet& given, Progress* progress) {
+  options.Check();
+  if (options.threads == 0) return Resize(options, given_base, given, progress);
+  tbb::task_arena arena(options.threads);
+  return arena.execute([&] { return Resize(options, given_base, given, progress); });
 }
 
 }  // namespace bespoke

@@ -18,9 +18,11 @@
 // polish, the final Pareto front, per-generation statistics, the graded
 // start, and the proportional-grading seed for comparison.
 //
-// Deterministic for a given seed (variation runs on one generator; only the
-// pure fitness evaluation runs in parallel, with TBB). Errors: InputError for
-// bad options, unknown or missing measurements.
+// Deterministic for a given seed whatever the thread count: the run's
+// generator seeds one generator per mating pair and per rebirth, in order,
+// and breeding and the pure fitness evaluation run in parallel (TBB), as
+// do the two polishes. Errors: InputError for bad options, unknown or
+// missing measurements.
 #ifndef BESPOKE_RESIZE_GA_RESIZE_H_
 #define BESPOKE_RESIZE_GA_RESIZE_H_
 
@@ -53,6 +55,7 @@ struct ResizeOptions {
   double tolerance_mm = 1;             // measurement tolerance of the final pick. Default 1 mm.
   double min_gap_mm = 0.1;             // grid ordering gap. Default 0.1 mm.
   bool polish = true;                  // run the constrained polish. Default on.
+  int threads = 0;                     // threads to use; 0 (default) = all CPUs
   // Start the GA from the graded pattern (grader.h); off: from the
   // proportional seed (Algorithm 6), as the thesis does. Default on.
   bool graded_start = true;

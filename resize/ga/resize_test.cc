@@ -222,6 +222,25 @@ TEST(Resize, DeterministicForASeed) {
   EXPECT_EQ(MaxVertexMove(a.fitted, b.fitted), 0.0);
 }
 
+// Evaluation runs in parallel, every random draw in one thread: one thread
+// and several give the same answer, bit for bit.
+TEST(Resize, SameAnswerWhateverTheThreadCount) {
+  const MeasurementSet body = VariedMeasurements("shirt", 3);
+  const Pattern pattern = DraftDesign("shirt", BaseMeasurements("shirt"));
+  ResizeOptions o = Small();
+  auto run = [&](int threads) {
+    o.threads = threads;
+    return ResizePattern(o, pattern, body, nullptr);
+  };
+  const ResizeResult one = run(1), several = run(3);
+  EXPECT_EQ(MaxVertexMove(one.fitted, several.fitted), 0.0);
+  EXPECT_EQ(one.ga_objectives.shape_deg, several.ga_objectives.shape_deg);
+  EXPECT_EQ(one.ga_objectives.seam, several.ga_objectives.seam);
+  ASSERT_EQ(one.front.size(), several.front.size());
+  for (size_t i = 0; i < one.front.size(); ++i)
+    EXPECT_EQ(one.front[i].measurement_mm, several.front[i].measurement_mm) << i;
+}
+
 TEST(Resize, UnknownOrMissingMeasurementIsInputError) {
   Pattern pattern = DraftDesign("shirt", BaseMeasurements("shirt"));
   MeasurementSet body = BaseMeasurements("shirt");

@@ -1,5 +1,8 @@
 #include "resize/ga/solve.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -80,6 +83,43 @@ bool Valid(const SolveOptions& o, const FitnessModel& model, const std::vector<b
   return true;
 }
 
+// A factorisation whose fill-reducing ordering (AMD, a good part of the
+// cost) is computed again only when the matrix's sparsity pattern changes:
+// the normal matrix keeps its pattern from one Gauss-Newton step to the
+// next. The same ordering gives the same factors as a fresh SimplicialLDLT.
+struct Factor {
+  Eigen::SimplicialLDLT<Sparse> ldlt;
+  std::vector<Sparse::StorageIndex> outer, inner;  // the analysed pattern
+};
+
+void Factorize(const Sparse& h, Factor* f) {
+  const auto* outer = h.outerIndexPtr();
+  const auto* inner = h.innerIndexPtr();
+  const bool same = f->outer.size() == static_cast<size_t>(h.outerSize() + 1) &&
+                    std::equal(f->outer.begin(), f->outer.end(), outer) &&
+                    f->inner.size() == static_cast<size_t>(h.nonZeros()) &&
+                    std::equal(f->inner.begin(), f->inner.end(), inner);
+  if (!same) {
+    f->ldlt.analyzePattern(h);
+    f->outer.assign(outer, outer + h.outerSize() + 1);
+    f->inner.assign(inner, inner + h.nonZeros());
+  }
+  f->ldlt.factorize(h);
+}
+
+// ldlt^-1 rhs, blocks of columns solved in parallel (each column is solved
+// on its own either way, so the result does not depend on the threads).
+Eigen::MatrixXd SolveColumns(const Eigen::SimplicialLDLT<Sparse>& ldlt,
+                             const Eigen::MatrixXd& rhs) {
+  Eigen::MatrixXd out(rhs.rows(), rhs.cols());
+  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, rhs.cols(), 16),
+                    [&](const tbb::blocked_range<Eigen::Index>& r) {
+                      const Eigen::Index c = r.begin(), w = r.end() - r.begin();
+                      out.middleCols(c, w) = ldlt.solve(rhs.middleCols(c, w));
+                    });
+  return out;
+}
+
 }  // namespace
 
 void SolveOptions::Check() const {
@@ -106,6 +146,7 @@ SolveReport Solve(const SolveOptions& o, const FitnessModel& model, const Sparse
   double rho = 1;  // exact-penalty weight, kept above the multipliers
   auto merit = [&](const State& z) { return z.Objective() + rho * z.c.lpNorm<1>(); };
   double damping = 0;
+  Factor factor;
   for (int it = 0; it < o.max_iterations && n > 0; ++it) {
     report.iterations = it + 1;
     const Sparse jc = st.jc * p;
@@ -120,7 +161,9 @@ SolveReport Solve(const SolveOptions& o, const FitnessModel& model, const Sparse
     for (int attempt = 0; attempt < 6 && !accepted; ++attempt) {
       Sparse hd = h;
       for (Eigen::Index k = 0; k < n; ++k) hd.coeffRef(k, k) += o.regularisation + damping;
-      Eigen::SimplicialLDLT<Sparse> ldlt(hd);
+      hd.makeCompressed();
+      Factorize(hd, &factor);
+      const Eigen::SimplicialLDLT<Sparse>& ldlt = factor.ldlt;
       if (ldlt.info() != Eigen::Success) {
         damping = std::max(1e-6, 10 * damping);
         continue;
@@ -128,7 +171,7 @@ SolveReport Solve(const SolveOptions& o, const FitnessModel& model, const Sparse
       const Eigen::VectorXd u = ldlt.solve(g);
       Eigen::VectorXd dx = -u;
       if (m > 0) {
-        const Eigen::MatrixXd z = ldlt.solve(Eigen::MatrixXd(jc.transpose()));
+        const Eigen::MatrixXd z = SolveColumns(ldlt, Eigen::MatrixXd(jc.transpose()));
         Eigen::MatrixXd schur = jc * z;
         schur.diagonal().array() += 1e-9 * (1 + schur.diagonal().cwiseAbs().maxCoeff());
         const Eigen::VectorXd y = schur.ldlt().solve(st.c - jc * u);
