@@ -133,6 +133,7 @@ FitnessModel::FitnessModel(const Pattern& base, const BlockSet& blocks, const Me
     }
     const Eigen::VectorXd turning = TurningAngles(piece.outline);
     base_turning_.push_back(turning);
+    shape_turning_.push_back(turning);
     for (int v : piece.right_angles) {
       corners_.push_back({k, v});
       corner_turning_.push_back(turning[v]);
@@ -314,6 +315,12 @@ std::vector<FitnessModel::TurningBound> FitnessModel::CurveViolations(
   return out;
 }
 
+void FitnessModel::SetShapeReference(const Eigen::VectorXd& genes) {
+  std::vector<Outline> outlines;
+  Outlines(genes, &outlines);
+  for (size_t p = 0; p < outlines.size(); ++p) shape_turning_[p] = TurningAngles(outlines[p]);
+}
+
 Objectives FitnessModel::Evaluate(const Eigen::VectorXd& genes, bool check_simple) const {
   // Per-thread buffers: evaluation runs for every individual of every
   // generation, in parallel, and must not allocate once they have grown.
@@ -361,10 +368,10 @@ Objectives FitnessModel::Evaluate(const Eigen::VectorXd& genes, bool check_simpl
     if (!driven_[p]) continue;
     const Eigen::VectorXd& t = turning[p];
     for (Eigen::Index v = 0; v < t.size(); ++v)
-      o.shape_deg += std::abs(WrapAngle(t[v] - base_turning_[p][v])) * kDeg;
+      o.shape_deg += std::abs(WrapAngle(t[v] - shape_turning_[p][v])) * kDeg;
     vertices += static_cast<int>(t.size());
     for (int c : base_.pieces[p].critical)
-      o.critical_shape_deg += std::abs(WrapAngle(t[c] - base_turning_[p][c])) * kDeg;
+      o.critical_shape_deg += std::abs(WrapAngle(t[c] - shape_turning_[p][c])) * kDeg;
     critical += static_cast<int>(base_.pieces[p].critical.size());
     if (check_simple && FindSelfIntersection(outlines[p]).first >= 0) o.simple = false;
   }

@@ -10,9 +10,11 @@
 //    are taken relative to the base pattern (and the designed seam ease is
 //    spread over the edges), because two well-matched sides of a curved seam
 //    (sleeve head vs armhole) legitimately differ in angle and length.
-//  shape: mean |change of turning angle| from the base over all outline
-//    vertices of the pieces a binding or seam reaches (deg); scale-invariant,
-//    so proportional grading has shape change 0.
+//  shape: mean |change of turning angle| from the shape reference over all
+//    outline vertices of the pieces a binding or seam reaches (deg); the
+//    reference is the base until SetShapeReference names another (resize.h:
+//    the graded start). Scale-invariant: proportional grading of the
+//    reference has shape change 0.
 // Also reported: the largest binding error, the critical-point angle change
 // (the thesis's higher-level selection criterion), the worst seam total
 // length mismatch and the largest structure-rule violation.
@@ -54,6 +56,10 @@ class FitnessModel {
   FitnessModel(const Pattern& base, const BlockSet& blocks, const MeasurementSet& body);
 
   Objectives Evaluate(const Eigen::VectorXd& genes, bool check_simple = false) const;
+
+  // Measures the shape objective from the pattern of `genes` instead of the
+  // base: the turning angles the GA keeps are then that pattern's.
+  void SetShapeReference(const Eigen::VectorXd& genes);
 
   // Per binding: target (mm) and achieved (mm) for `genes`.
   const std::vector<double>& Targets() const { return targets_; }
@@ -166,8 +172,9 @@ class FitnessModel {
   std::vector<NotchData> notches_;
   std::vector<std::vector<int>>
       curve_sign_;  // per piece, per vertex: base sign rule (+1, -1, 0 free)
-  std::vector<std::vector<bool>> curve_flat_;  // per piece, per vertex: a flat vertex
-  std::vector<Eigen::VectorXd> base_turning_;  // per piece, radians
+  std::vector<std::vector<bool>> curve_flat_;   // per piece, per vertex: a flat vertex
+  std::vector<Eigen::VectorXd> base_turning_;   // per piece, radians
+  std::vector<Eigen::VectorXd> shape_turning_;  // per piece: the shape reference's
 };
 
 }  // namespace bespoke

@@ -220,7 +220,8 @@ json ResizeReportJson(const Pattern& base, const MeasurementSet& body, const Res
           {"objectives",
            {{"final", ObjectivesJson(r.objectives)},
             {"ga_pick", ObjectivesJson(r.ga_objectives)},
-            {"proportional_seed", ObjectivesJson(r.seed_objectives)}}},
+            {"proportional_seed", ObjectivesJson(r.seed_objectives)},
+            {"shape_reference", r.shape_reference}}},
           {"polish",
            {{"start", r.polish_start},
             {"iterations", r.polish.iterations},
@@ -294,7 +295,8 @@ std::string ResizeReportText(const json& report) {
       s << line;
     }
   }
-  s << "\nObjectives (as thesis Table 4.2: measurement Eq 4.5 mm, seam Eq 4.8, shape deg)\n";
+  s << "\nObjectives (as thesis Table 4.2: measurement Eq 4.5 mm, seam Eq 4.8, shape deg from the "
+    << report["objectives"]["shape_reference"].get<std::string>() << ")\n";
   for (const char* which : {"proportional_seed", "ga_pick", "final"}) {
     const json& o = report["objectives"][which];
     s << "  " << which << ": measurement " << Fmt("%.3f", o["measurement_mm"].get<double>())

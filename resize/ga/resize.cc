@@ -311,7 +311,7 @@ ResizeResult Resize(const ResizeOptions& options, const Pattern& given_base,
   const Pattern base = DrivenPieces(full, &index);
   for (const Piece& piece : base.pieces) result.fitted_pieces.push_back(piece.name);
   const BlockSet blocks = BuildBlocks(options.block_options, base);
-  const FitnessModel model(base, blocks, body);
+  FitnessModel model(base, blocks, body);
   const std::vector<double> scales = ProportionalScales(base, body);
   const Eigen::VectorXd seed = SeedGenes(base, blocks, scales);
   result.seed = Merge(full, index, ScalePieces(base, scales));
@@ -326,6 +326,11 @@ ResizeResult Resize(const ResizeOptions& options, const Pattern& given_base,
                                            result.seed_objectives.max_seam_length_mm);
   }
   result.graded = Merge(full, index, ApplyGenes(base, blocks, graded));
+  if (options.graded_start && options.shape_from_graded) {
+    model.SetShapeReference(graded);
+    result.shape_reference = "graded start";
+    result.seed_objectives = model.Evaluate(seed, true);
+  }
   result.graded_objectives = model.Evaluate(graded, true);
   Eigen::VectorXd genes = graded;
   if (options.generations > 0) {

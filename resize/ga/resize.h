@@ -59,6 +59,10 @@ struct ResizeOptions {
   // Start the GA from the graded pattern (grader.h); off: from the
   // proportional seed (Algorithm 6), as the thesis does. Default on.
   bool graded_start = true;
+  // The shape objective measures change from the graded start (a grader's
+  // shape for this body) when it is the start; off: from the base, as the
+  // thesis does. Default on.
+  bool shape_from_graded = true;
   GraderOptions grader_options;
   PolishOptions polish_options;
   BlockOptions block_options;
@@ -83,6 +87,7 @@ struct ResizeResult {
   std::vector<GenerationStats> history;
   Pattern seed;  // proportional scaling (Algorithm 6)
   Objectives seed_objectives;
+  std::string shape_reference = "base";    // what the shape objective measures change from
   Pattern graded;                          // the graded start (grader.h), or the seed when off
   Objectives graded_objectives;            // of the graded start
   double graded_constraint_mm = 0;         // largest binding, seam or structure error it left (mm)

@@ -50,6 +50,26 @@ TEST(Resize, FarBodyMeetsMeasurementsAndSeams) {
   EXPECT_TRUE(r.objectives.simple);
 }
 
+// With the graded start as the shape reference, the graded start itself has
+// no shape change and the proportional seed (the base scaled) has some; with
+// the base as reference (the thesis), the seed, the base scaled per piece
+// in x and y, has less than the graded start.
+TEST(Resize, ShapeIsMeasuredFromTheGradedStart) {
+  const MeasurementSet body = VariedMeasurements("shirt", 3);
+  const Pattern pattern = DraftDesign("shirt", BaseMeasurements("shirt"));
+  ResizeOptions o = Small();
+  o.generations = 0;
+  const ResizeResult graded = ResizePattern(o, pattern, body, nullptr);
+  EXPECT_EQ(graded.shape_reference, "graded start");
+  EXPECT_NEAR(graded.graded_objectives.shape_deg, 0, 1e-9);
+  EXPECT_GT(graded.seed_objectives.shape_deg, 0.05);
+  o.shape_from_graded = false;
+  const ResizeResult base = ResizePattern(o, pattern, body, nullptr);
+  EXPECT_EQ(base.shape_reference, "base");
+  EXPECT_LT(base.seed_objectives.shape_deg, base.graded_objectives.shape_deg);
+  EXPECT_GT(base.graded_objectives.shape_deg, 0.05);
+}
+
 TEST(Resize, TrousersFollowALongerRise) {
   // Same legs and girths, a 50 mm longer rise: only the rise bindings see
   // it. They are met, and the fit is closer to the trousers drafted for that
