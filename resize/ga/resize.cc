@@ -303,7 +303,9 @@ ResizeResult Resize(const ResizeOptions& options, const Pattern& given_base,
   ValidatePattern(full, "pattern '" + full.name + "'");
   ResolveKeptEase("pattern '" + full.name + "'", &full);
   if (full.bindings.empty())
-    throw InputError("pattern '" + full.name + "' has no measurement bindings to fit");
+    throw InputError("pattern '" + full.name +
+                     "' has no measurement bindings to fit (a DXF carries none: name them in a "
+                     "sidecar, --sidecar FILE.json, see docs/pattern-format.md 'Sidecar')");
   CheckBindingsAgainst(full, body, "pattern '" + full.name + "'", "the measurements");
   const auto start = std::chrono::steady_clock::now();
   ResizeResult result;

@@ -270,5 +270,16 @@ TEST(Resize, UnknownOrMissingMeasurementIsInputError) {
   EXPECT_THROW(ResizePattern(Small(), pattern, BaseMeasurements("shirt"), nullptr), InputError);
 }
 
+TEST(Resize, NoBindingsSaysWhereToNameThem) {
+  Pattern pattern = DraftDesign("shirt", BaseMeasurements("shirt"));
+  pattern.bindings.clear();
+  try {
+    ResizePattern(Small(), pattern, BaseMeasurements("shirt"), nullptr);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--sidecar"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace bespoke
