@@ -28,11 +28,12 @@
 #include <vector>
 
 #include "measure/landmarks/body_graph.h"
+#include "measure/landmarks/landmarks.h"
 
 namespace bespoke::landmarks {
 
 // kNone: a stray piece of the scan away from the body (not used).
-enum class Part : signed char { kTrunk = 0, kArmRight, kArmLeft, kLegRight, kLegLeft, kNone };
+using Part = ScanPart;  // landmarks.h
 
 struct BodyStructureOptions {
   BodyGraphOptions graph;  // the surface graph (body_graph.h)

@@ -220,8 +220,8 @@ namespace {
 // The level of the breast in the candidate rows: going down from the top,
 // the first slice whose front (along `dir`, mean of three slices) stands
 // out - no higher within 25 mm around it and at least 3 mm higher than the
-// front 60 mm below (the fold under the breast) - or -1 when the front only
-// grows downwards (no breast ahead of a belly).
+// front somewhere in the 60 mm below (the fold under the breast) - or -1
+// when the front only grows downwards (no breast ahead of a belly).
 double BreastLevel(const Context& c, const std::vector<int>& rows, const Eigen::Vector3d& dir,
                    int lo, int hi) {
   std::vector<double> front(static_cast<size_t>(hi - lo + 1), -kInf);
@@ -239,8 +239,13 @@ double BreastLevel(const Context& c, const std::vector<int>& rows, const Eigen::
     bool top = true;
     for (int j = std::max(1, k - around); j <= std::min<int>(k + around, mean.size() - 2); ++j)
       top &= !(mean[static_cast<size_t>(j)] > mean[static_cast<size_t>(k)]);
-    const int under = k - below;
-    if (top && under >= 1 && mean[static_cast<size_t>(under)] < mean[static_cast<size_t>(k)] - 3)
+    // The fold under the breast: somewhere within `below` under it the
+    // front lies 3 mm further back (a belly lower down may then stand out
+    // further still: the breast is the first such peak from the top).
+    double fold = kInf;
+    for (int j = std::max(1, k - below); j < k; ++j)
+      fold = std::min(fold, mean[static_cast<size_t>(j)]);
+    if (top && k - below >= 1 && fold < mean[static_cast<size_t>(k)] - 3)
       return c.slices[static_cast<size_t>(lo + k)].z;
   }
   return -1;
@@ -309,10 +314,20 @@ void FindTrunkLevels(Context* c) {
   double under_z = -1;
   if (c->Has("bust_right") || c->Has("bust_left")) {
     const Eigen::Vector3d bust = c->Has("bust_right") ? c->Pos("bust_right") : c->Pos("bust_left");
+    // The bend averaged over both breasts' verticals where found: the range
+    // noise in one profile's second difference rivals a small fold's bend.
+    std::vector<double> xs;
+    for (const char* name : {"bust_right", "bust_left"})
+      if (c->Has(name)) xs.push_back(c->Pos(name).x());
+    const auto bend_at = [&](double z) {
+      double sum = 0;
+      for (double x : xs)
+        sum += FrontAt(*c, z + 10, x) - 2 * FrontAt(*c, z, x) + FrontAt(*c, z - 10, x);
+      return sum / static_cast<double>(xs.size());
+    };
     double best_bend = -kInf;
     for (double z = bust.z() - 0.08 * h; z < bust.z() - 0.01 * h; z += c->step) {
-      const double bend = FrontAt(*c, z + 10, bust.x()) - 2 * FrontAt(*c, z, bust.x()) +
-                          FrontAt(*c, z - 10, bust.x());
+      const double bend = bend_at(z);
       if (std::isfinite(bend) && bend > best_bend) best_bend = bend, under_z = z;
     }
     // A flat chest (most men) has no clear fold: the noise's largest bend

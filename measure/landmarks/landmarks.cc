@@ -199,6 +199,15 @@ void CheckProportions(LandmarkSet* set, double h) {
 }  // namespace
 }  // namespace landmarks
 
+std::vector<ScanPart> FindBodyParts(const PointCloud& cloud) {
+  if (cloud.size() == 0 || !cloud.points.allFinite()) return {};
+  landmarks::BodyStructure structure =
+      landmarks::FindBodyStructure(landmarks::BodyStructureOptions{}, cloud.points, cloud.normals,
+                                   cloud.points.col(2).maxCoeff());
+  if (!structure.ok) return {};
+  return std::move(structure.part);
+}
+
 LandmarkSet DetectLandmarks(const LandmarkOptions& options, const PointCloud& cloud,
                             Progress* progress) {
   using namespace landmarks;
@@ -240,12 +249,14 @@ LandmarkSet DetectLandmarks(const LandmarkOptions& options, const PointCloud& cl
   CheckProportions(&c.found, c.crown_z);
 
   LandmarkSet set = std::move(c.found);
+  if (c.structure.ok) set.parts = c.structure.part;
   const Catalogue& catalogue = Catalogue::Builtin();
   for (const LandmarkDef& def : catalogue.landmarks()) {
     if (!set.Has(def.name) && !set.missing.count(def.name)) set.missing[def.name] = "not detected";
   }
   if (!options.only.empty()) {
     LandmarkSet some;
+    some.parts = std::move(set.parts);
     for (const std::string& name : options.only) {
       if (set.Has(name))
         some.points[name] = set.points.at(name);

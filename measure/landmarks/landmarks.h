@@ -36,9 +36,17 @@ struct Landmark {
   std::string method;              // short tag of how it was found, e.g. "slice_width_min"
 };
 
+// The body part a cloud point belongs to, from the geodesic structure over
+// the scan's surface (docs/landmarks.md, "Structure"): an arm resting on the
+// trunk is still an arm. kNone: a stray piece away from the body.
+enum class ScanPart : signed char { kTrunk = 0, kArmRight, kArmLeft, kLegRight, kLegLeft, kNone };
+
 struct LandmarkSet {
   std::map<std::string, Landmark> points;      // catalogue names, paired ones expanded
   std::map<std::string, std::string> missing;  // name -> why it could not be placed
+  // Per row of the cloud the set was detected on (#P), its body part; empty
+  // when the structure failed or the points came from elsewhere (a file).
+  std::vector<ScanPart> parts;
   bool Has(const std::string& name) const { return points.count(name) > 0; }
   // InputError naming the landmark (and the reason when it is missing).
   const Landmark& At(const std::string& name) const;
@@ -56,6 +64,11 @@ struct LandmarkOptions {
 // Finds every catalogue landmark it can on `cloud` (body frame, mm).
 LandmarkSet DetectLandmarks(const LandmarkOptions& options, const PointCloud& cloud,
                             Progress* progress = nullptr);
+
+// The body part of every point of `cloud` (body frame, mm), as
+// DetectLandmarks finds them; empty when the structure fails (no two feet).
+// Never throws.
+std::vector<ScanPart> FindBodyParts(const PointCloud& cloud);
 
 // The override file a tailor writes to correct points:
 //   { "frame": "body" | "scan", "units": "mm",

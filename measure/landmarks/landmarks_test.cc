@@ -97,6 +97,37 @@ INSTANTIATE_TEST_SUITE_P(APose, ParametricLandmarks,
                          ::testing::Values(ParametricCase{1, 30}, ParametricCase{2, 30},
                                            ParametricCase{4, 15}));
 
+// The body parts that measuring uses to keep arms out of trunk girths: with
+// the arms at 15 deg (hands a few centimetres from the hips), the points
+// round the true wrists are the arms', those round the true waist and hip
+// points the trunk's, and FindBodyParts gives what DetectLandmarks found.
+TEST(ParametricLandmarks, ArmsBesideTheTrunkAreTheirOwnPart) {
+  ParametricBodyOptions options;
+  options.seed = 4;
+  options.arm_abduction_deg = 15;
+  const Body body = GenerateParametricBody(options);
+  testing::ScannedBodyOptions scan_options;
+  scan_options.scan_seed = 4;
+  const testing::ScannedBody scan = testing::ScanAndClean(scan_options, body);
+  const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
+  ASSERT_EQ(set.parts.size(), static_cast<std::size_t>(scan.cloud.size()));
+  EXPECT_TRUE(FindBodyParts(scan.cloud) == set.parts);
+  // Share of the cloud's points within 25 mm of `name`'s true position that carry `part`.
+  const auto share = [&](const std::string& name, ScanPart part) {
+    int near = 0, hits = 0;
+    for (Eigen::Index r = 0; r < scan.cloud.size(); ++r) {
+      if ((scan.cloud.points.row(r).transpose() - scan.truth.at(name)).norm() > 25) continue;
+      ++near, hits += set.parts[static_cast<std::size_t>(r)] == part;
+    }
+    return near > 0 ? static_cast<double>(hits) / near : 0.0;
+  };
+  EXPECT_GE(share("wrist_right", ScanPart::kArmRight), 0.9);
+  EXPECT_GE(share("wrist_left", ScanPart::kArmLeft), 0.9);
+  for (const char* name : {"front_waist", "back_waist", "side_waist_right", "side_waist_left",
+                           "hip_right", "hip_left", "bust_right", "bust_left"})
+    EXPECT_GE(share(name, ScanPart::kTrunk), 0.9) << name;
+}
+
 TEST(ParametricLandmarks, TPose) {
   ParametricBodyOptions options;
   options.seed = 3;

@@ -95,7 +95,8 @@ double Sigma(const UncertaintyOptions& u, const LandmarkSet& set, const std::str
 // datum's effect and is left out.
 double GirthSd(const MeasureOptions& o, const MeasurementDef& m, const PointCloud& cloud,
                const LandmarkSet& set, const Vec& point, const Vec& normal,
-               const Eigen::MatrixX3d& anchors, double girth_mm) {
+               const Eigen::MatrixX3d& anchors, const std::vector<bool>& leave_out, bool one_part,
+               double girth_mm) {
   double var = 0;
   for (const std::string& name : m.datum)
     var += Sigma(o.uncertainty, set, name) * Sigma(o.uncertainty, set, name);
@@ -105,28 +106,63 @@ double GirthSd(const MeasureOptions& o, const MeasurementDef& m, const PointClou
   const double probe = std::min(sd, 10.0);
   double change = 0;
   for (double sign : {-1.0, 1.0}) {
-    const SectionGirth s = MeasureSectionGirth(o.section, cloud.points, cloud.normals,
-                                               point + sign * probe * normal, normal, anchors);
+    const SectionGirth s =
+        MeasureSectionGirth(o.section, cloud.points, cloud.normals, point + sign * probe * normal,
+                            normal, anchors, leave_out, one_part);
     const double d = std::abs(s.girth_mm - girth_mm);
     if (s.points > 0 && d < 0.2 * girth_mm) change = std::max(change, d);
   }
   return probe > 0 ? change * sd / probe : 0;
 }
 
+bool IsArm(ScanPart part) { return part == ScanPart::kArmRight || part == ScanPart::kArmLeft; }
+
+// The points a girth leaves out, from the body structure's parts: a trunk
+// girth (horizontal, round the body: side centre or both) keeps the trunk's
+// points only, so arms and hands resting on it never join its section
+// however close they lie; with several datum points round the trunk
+// (`one_part`, as the reference takes the loop enclosing them) all that is
+// left is its section, however the scan's holes cut it; with one (under-bust,
+// middle hip) the piece at the datum point, as the reference takes the loop
+// nearest it. Another girth with no datum point on an arm (a leg's) leaves
+// out the arms. Empty (nothing left out) without a structure or for an arm's
+// girth.
+std::vector<bool> LeaveOut(const MeasurementDef& m, const PointCloud& cloud,
+                           const std::vector<ScanPart>& parts, const Eigen::MatrixX3d& anchors,
+                           bool* one_part) {
+  *one_part = false;
+  if (parts.size() != static_cast<std::size_t>(cloud.size()) || cloud.size() == 0) return {};
+  const bool trunk = m.plane == GirthPlane::kHorizontal && (m.side == "centre" || m.side == "both");
+  for (Eigen::Index a = 0; a < anchors.rows() && !trunk; ++a) {
+    Eigen::Index nearest = 0;
+    (cloud.points.rowwise() - anchors.row(a)).rowwise().squaredNorm().minCoeff(&nearest);
+    if (IsArm(parts[static_cast<std::size_t>(nearest)])) return {};
+  }
+  std::vector<bool> out(parts.size());
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    out[i] = trunk ? parts[i] != ScanPart::kTrunk : IsArm(parts[i]);
+  *one_part = trunk && anchors.rows() > 1;
+  return out;
+}
+
 Measurement Girth(const MeasureOptions& o, const MeasurementDef& m, const PointCloud& cloud,
-                  const LandmarkSet& set, const ScanQuality& scan) {
+                  const LandmarkSet& set, const std::vector<ScanPart>& parts,
+                  const ScanQuality& scan) {
   Measurement out = Start(m);
   auto [point, normal] = GirthPlane(m, set);
   Eigen::MatrixX3d anchors(static_cast<Eigen::Index>(m.datum.size()), 3);
   for (std::size_t i = 0; i < m.datum.size(); ++i)
     anchors.row(static_cast<Eigen::Index>(i)) = Position(set, m.datum[i]);
-  SectionGirth s =
-      MeasureSectionGirth(o.section, cloud.points, cloud.normals, point, normal, anchors);
+  bool one_part = false;
+  const std::vector<bool> leave_out = LeaveOut(m, cloud, parts, anchors, &one_part);
+  SectionGirth s = MeasureSectionGirth(o.section, cloud.points, cloud.normals, point, normal,
+                                       anchors, leave_out, one_part);
   while (m.arms == "lower" && out.lowered_mm + o.lower_step_mm <= o.max_lower_mm && s.points > 0 &&
          ReachesPastDatum(s.part, m, set, o.arms_margin_mm)) {
     point.z() -= o.lower_step_mm;
     out.lowered_mm += o.lower_step_mm;
-    s = MeasureSectionGirth(o.section, cloud.points, cloud.normals, point, normal, anchors);
+    s = MeasureSectionGirth(o.section, cloud.points, cloud.normals, point, normal, anchors,
+                            leave_out, one_part);
   }
   if (s.points == 0) throw Skip{"the girth plane misses the scan"};
   out.value_mm = s.girth_mm;
@@ -140,9 +176,10 @@ Measurement Girth(const MeasureOptions& o, const MeasurementDef& m, const PointC
   if (m.side == "right" && s.part.col(0).minCoeff() <= 0)
     out.flags.push_back("section_crosses_midline");
   if (o.keep_geometry) out.geometry = s.hull;
-  out.uncertainty_mm =
-      Uncertainty95(o.uncertainty, GirthSd(o, m, cloud, set, point, normal, anchors, s.girth_mm),
-                    scan.noise_mm, scan.spacing_mm, 0);
+  out.uncertainty_mm = Uncertainty95(
+      o.uncertainty,
+      GirthSd(o, m, cloud, set, point, normal, anchors, leave_out, one_part, s.girth_mm),
+      scan.noise_mm, scan.spacing_mm, 0);
   return out;
 }
 
@@ -386,12 +423,19 @@ MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue,
     scan.noise_mm = ScanNoise(index, &scan.spacing_mm);
   }
   StageClock girth_clock("girths");
+  // The body parts: the detector's, else (datum points from a file) found
+  // here; none when separate_arms is off or the structure fails.
+  std::vector<ScanPart> parts;
+  if (options.separate_arms)
+    parts = landmarks.parts.size() == static_cast<std::size_t>(body_cloud.size())
+                ? landmarks.parts
+                : FindBodyParts(body_cloud);
   std::int64_t girths = 0, n_girths = 0;
   for (const MeasurementDef* m : todo) n_girths += m->kind == MeasurementKind::kGirth;
   ProgressBegin(progress, "girths", n_girths);
   for (const MeasurementDef* m : todo) {
     if (m->method != MeasurementMethod::kSectionHull) continue;
-    attempt(*m, [&] { return Girth(options, *m, body_cloud, landmarks, scan); });
+    attempt(*m, [&] { return Girth(options, *m, body_cloud, landmarks, parts, scan); });
     ProgressUpdate(progress, ++girths);
   }
   ProgressEnd(progress);

@@ -66,9 +66,12 @@ struct MeasureOptions {
   double uncertain_confidence = 0.5;  // default 0.5: below it a landmark is "uncertain"
   int geodesic_threads = 2;           // default 2: threads for the geodesic lengths (each
                                       // beyond the first builds its own grid)
-  bool keep_geometry = true;          // default true: hull loops and paths for rendering
-  std::vector<std::string> only;      // default empty = every catalogue measurement
-  void Check() const;                 // InputError when out of range
+  // default true: a girth with no datum point on an arm leaves out the points
+  // the body structure labels arm (the landmarks' parts, else found here)
+  bool separate_arms = true;
+  bool keep_geometry = true;      // default true: hull loops and paths for rendering
+  std::vector<std::string> only;  // default empty = every catalogue measurement
+  void Check() const;             // InputError when out of range
 };
 
 struct Measurement {

@@ -225,7 +225,8 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
                                  const Eigen::MatrixX3d& normals,
                                  const Eigen::Vector3d& plane_point,
                                  const Eigen::Vector3d& plane_normal,
-                                 const Eigen::MatrixX3d& anchors) {
+                                 const Eigen::MatrixX3d& anchors,
+                                 const std::vector<bool>& leave_out, bool one_part) {
   options.Check();
   if (std::abs(plane_normal.norm() - 1) > 1e-6 || !plane_point.allFinite())
     throw InputError("section girth: the plane needs a finite point and a unit normal");
@@ -233,10 +234,13 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
   const PlaneFrame frame = MakeFrame(plane_point, plane_normal);
   if (normals.rows() != 0 && normals.rows() != cloud.rows())
     throw InputError("section girth: normals must have one row per point, or none");
+  if (!leave_out.empty() && leave_out.size() != static_cast<std::size_t>(cloud.rows()))
+    throw InputError("section girth: leave_out must have one flag per point, or none");
   std::vector<Vec2> slab;
   const Eigen::VectorXd offset = (cloud.rowwise() - plane_point.transpose()) * plane_normal;
   for (Eigen::Index i = 0; i < cloud.rows(); ++i) {
     if (!(std::abs(offset(i)) <= options.half_thickness_mm)) continue;
+    if (!leave_out.empty() && leave_out[static_cast<std::size_t>(i)]) continue;
     Vec3 x = cloud.row(i).transpose();
     if (normals.rows()) {
       // Slide along the surface (its tangent closest to the plane normal)
@@ -289,8 +293,15 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
   std::vector<bool> taken(pieces.size(), false);
   taken[static_cast<std::size_t>(seed)] = true;
 
+  // The limbs left out, every piece left is the part's.
+  for (std::size_t k = 0; one_part && k < pieces.size(); ++k) {
+    if (taken[k] || pieces[k].size() < static_cast<std::size_t>(options.min_piece_points)) continue;
+    taken[k] = true;
+    part.insert(part.end(), pieces[k].begin(), pieces[k].end());
+    ++out.pieces_joined;
+  }
   // Arcs of the same loop across scan holes.
-  for (bool grew = true; grew;) {
+  for (bool grew = !one_part; grew;) {
     grew = false;
     const Vec2 centre = Mean(part);
     const Occupancy occupancy = Occupy(part, centre);

@@ -28,13 +28,17 @@
 // are more than open_gap_mm apart: the hull bridged a scan hole there.
 //
 // Input: #P x 3 cloud (body frame, mm), #P x 3 unit normals or 0 x 3, a plane (point, unit normal),
-// #D x 3 anchors (D >= 1). Output: SectionGirth (mm). Failure: InputError for bad options or a
-// non-unit normal; a plane that misses the cloud gives `points == 0` and girth 0 (the caller flags
-// or skips it), never a throw.
+// #D x 3 anchors (D >= 1), `leave_out`: #P flags of points of other body parts that never belong to
+// the section (the arms beside a trunk girth, from the body structure), or empty; `one_part`: every
+// point not left out belongs to the part (a trunk girth with the limbs left out), so the part is
+// every piece of at least min_piece_points, however the scan's holes cut the loop. Output:
+// SectionGirth (mm). Failure: InputError for bad options or a non-unit normal; a plane that misses
+// the cloud gives `points == 0` and girth 0 (the caller flags or skips it), never a throw.
 #ifndef BESPOKE_MEASURE_MEASUREMENTS_SECTION_GIRTH_H_
 #define BESPOKE_MEASURE_MEASUREMENTS_SECTION_GIRTH_H_
 
 #include <Eigen/Core>
+#include <vector>
 
 namespace bespoke {
 
@@ -67,7 +71,8 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
                                  const Eigen::MatrixX3d& normals,
                                  const Eigen::Vector3d& plane_point,
                                  const Eigen::Vector3d& plane_normal,
-                                 const Eigen::MatrixX3d& anchors);
+                                 const Eigen::MatrixX3d& anchors,
+                                 const std::vector<bool>& leave_out = {}, bool one_part = false);
 
 }  // namespace bespoke
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <random>
@@ -176,6 +177,50 @@ TEST(SectionGirth, HipWithTheHandsShadowStillExcludesTheHand) {
         << "whole hand " << whole_hand;  // mm
     EXPECT_TRUE(g.open);
   }
+}
+
+// A cylinder trunk with two cylinder arms resting on its sides, 2 mm apart
+// (closer than the piece gap: the slab alone joins them), 1 mm noise.
+TEST(SectionGirth, TrunkLeavesOutTheArmsRestingOnIt) {
+  const Prism trunk = Circle(150);
+  std::vector<Eigen::Vector3d> cloud;
+  Sample(trunk, 4, All, 1.0, &cloud);
+  const Eigen::MatrixX3d sides = (Eigen::MatrixX3d(2, 3) << 150, 0, 100, -150, 0, 100).finished();
+  const double alone_mm = Girth(cloud, sides).girth_mm;  // the same noisy trunk, no arms
+  const std::size_t trunk_points = cloud.size();
+  Sample(Circle(45, 197), 4, All, 1.0, &cloud, 2);
+  Sample(Circle(45, -197), 4, All, 1.0, &cloud, 3);
+  EXPECT_GT(Girth(cloud, sides).girth_mm, alone_mm + 100);  // the slab alone: arms included
+  std::vector<bool> arms(cloud.size(), false);
+  std::fill(arms.begin() + static_cast<std::ptrdiff_t>(trunk_points), arms.end(), true);
+  const SectionGirth g =
+      MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), kPlane, kUp, sides, arms, true);
+  EXPECT_NEAR(g.girth_mm, alone_mm, 0.5);    // mm
+  EXPECT_LT(g.part.col(0).maxCoeff(), 156);  // mm: the trunk's side plus the noise
+}
+
+// The same trunk where the arms hide its sides: holes of +-40 deg at both
+// sides cut it into a front and a back arc. With the arms left out as
+// `one_part`, the tape spans both holes with chords.
+TEST(SectionGirth, TrunkCutByHolesUnderTheArmsIsOnePart) {
+  const double r = 150, hole = 40 * kPi / 180;
+  auto arcs = [&](double t) { return std::abs(std::sin(t)) > std::sin(hole); };
+  std::vector<Eigen::Vector3d> cloud;
+  Sample(Circle(r), 4, arcs, 0, &cloud);
+  const std::size_t trunk_points = cloud.size();
+  Sample(Circle(45, 197), 4, All, 0, &cloud, 2);
+  Sample(Circle(45, -197), 4, All, 0, &cloud, 3);
+  std::vector<bool> arms(cloud.size(), false);
+  std::fill(arms.begin() + static_cast<std::ptrdiff_t>(trunk_points), arms.end(), true);
+  const Eigen::MatrixX3d sides = (Eigen::MatrixX3d(2, 3) << 150, 0, 100, -150, 0, 100).finished();
+  const double expected = 2 * (kPi - 2 * hole) * r + 2 * 2 * r * std::sin(hole);  // arcs + chords
+  const SectionGirth g =
+      MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), kPlane, kUp, sides, arms, true);
+  // Each arc's end lies up to one spacing (4 mm of arc) inside its hole's
+  // edge, which shortens the tape by up to 4 * 4 mm * (1 - cos 40 deg) = 3.7 mm.
+  EXPECT_LT(g.girth_mm, expected + 0.5);  // mm
+  EXPECT_GT(g.girth_mm, expected - 3.8);  // mm
+  EXPECT_GE(g.pieces, 2);
 }
 
 TEST(SectionGirth, SmoothingRemovesTheNoiseBias) {
