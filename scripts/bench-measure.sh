@@ -4,13 +4,21 @@
 # run of `bespoke clean` on the same file in the same script gives the ratio
 # (wall figures on a shared machine vary; CPU and ratios are steadier).
 #   BUILD_DIR (default build)  RUNS (default 3)  OUT (default /tmp/bespoke-bench-measure)
+#   MODEL=makehuman: a MakeHuman body of the full population, arms at 30 deg,
+#   scanned by the 500k booth (needs ../shared), instead of the parametric one
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bespoke=${BUILD_DIR:-build}/bespoke
 runs=${RUNS:-3}
-out=${OUT:-/tmp/bespoke-bench-measure}
+model=${MODEL:-parametric}
+out=${OUT:-/tmp/bespoke-bench-measure-$model}
 mkdir -p "$out"
-if [ ! -f "$out/scan.ply" ]; then
+if [ ! -f "$out/scan.ply" ] && [ "$model" = makehuman ]; then
+  "$bespoke" --quiet synth-body --model makehuman --population full --posture arms-30 --seed 7 \
+    -o "$out/body.obj" --truth "$out/truth.json"
+  "$bespoke" --quiet scan-sim "$out/body.obj" -o "$out/scan.ply" --truth "$out/truth.json" \
+    --booth 500k --seed 7
+elif [ ! -f "$out/scan.ply" ]; then
   "$bespoke" --quiet synth-body --seed 3 -o "$out/body.obj" --truth "$out/truth.json"
   "$bespoke" --quiet scan-sim "$out/body.obj" -o "$out/scan.ply" --truth "$out/truth.json" \
     --resolution 290x216 --seed 3
