@@ -1,6 +1,7 @@
 #include "measure/measurements/geodesic_paths.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -195,22 +196,18 @@ void GeodesicPaths::Solve(const GeodesicPathOptions& o, CloudGeodesics& geodesic
       it = pending_.erase(it);
     }
   }
-  // Groups to workers (largest first, to the least loaded); worker 0 uses
-  // `geodesics`, the others build their own grid (CloudGeodesics keeps a
-  // per-object cache and is not thread-safe).
+  // Groups to workers as they come free, largest first (a group's cost, its
+  // propagation and paths, is not known before; taking the next one when
+  // idle keeps both busy). Worker 0 uses `geodesics`, the others build their
+  // own grid (CloudGeodesics keeps a per-object cache and is not
+  // thread-safe). A path does not depend on the worker that solves it.
   const int workers = std::max(1, std::min<int>(o.threads, static_cast<int>(groups.size())));
-  std::vector<std::vector<std::size_t>> assigned(static_cast<std::size_t>(workers));
-  std::vector<std::size_t> load(static_cast<std::size_t>(workers), 0);
   std::vector<std::size_t> order(groups.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
     return groups[x].second.size() > groups[y].second.size();
   });
-  for (std::size_t g : order) {
-    const auto w =
-        static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
-    assigned[w].push_back(g), load[w] += groups[g].second.size();
-  }
+  std::atomic<std::size_t> next{0};
   std::vector<std::map<std::pair<std::string, std::string>, GeodesicPath>> results(
       static_cast<std::size_t>(workers));
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(workers));
@@ -224,7 +221,8 @@ void GeodesicPaths::Solve(const GeodesicPathOptions& o, CloudGeodesics& geodesic
       // The pairs, then bridges into their sources at a hole, from the
       // other ends (grouped so each propagation serves its pairs).
       std::vector<std::pair<std::string, std::pair<std::string, std::string>>> reverse;
-      for (std::size_t k : assigned[w])
+      for (std::size_t i = next++; i < order.size(); i = next++) {
+        const std::size_t k = order[i];
         for (const auto& pair : groups[k].second) {
           results[w][pair] = SolvePair(o, g, set, groups[k].first, pair);
           const std::string& other = pair.first == groups[k].first ? pair.second : pair.first;
@@ -232,6 +230,7 @@ void GeodesicPaths::Solve(const GeodesicPathOptions& o, CloudGeodesics& geodesic
               ends_.at(groups[k].first).at_rim)
             reverse.emplace_back(other, pair);
         }
+      }
       std::sort(reverse.begin(), reverse.end());
       for (const auto& [from, pair] : reverse) {
         GeodesicPath& path = results[w][pair];

@@ -3,7 +3,8 @@
 // interface).
 //
 // Pairs are solved from a shared start where possible (the landmark in most
-// pending pairs first), on two worker threads. A tape crosses the scan's
+// pending pairs first), on two worker threads that each take the next
+// group of pairs when free. A tape crosses the scan's
 // holes (the crotch and the armpits no sensor saw): where a datum point
 // lies in a hole (farther than tolerance_mm from every scan point, up to
 // max_bridge_mm) or at one (its nearest scan point lies on the rim of an
