@@ -76,17 +76,22 @@ struct ParametricCase {
   double arm_deg;
 };
 
+// The parametric body of `seed` with its arms at `arm_deg`, scanned (scanner
+// seed = body seed) and cleaned into the body frame, with its truth.
+testing::ScannedBody ScannedParametric(std::uint64_t seed, double arm_deg) {
+  ParametricBodyOptions options;
+  options.seed = seed;
+  options.arm_abduction_deg = arm_deg;
+  testing::ScannedBodyOptions scan_options;
+  scan_options.scan_seed = seed;
+  return testing::ScanAndClean(scan_options, GenerateParametricBody(options));
+}
+
 class ParametricLandmarks : public ::testing::TestWithParam<ParametricCase> {};
 
 TEST_P(ParametricLandmarks, WithinToleranceOfTheTruth) {
   const ParametricCase c = GetParam();
-  ParametricBodyOptions options;
-  options.seed = c.seed;
-  options.arm_abduction_deg = c.arm_deg;
-  const Body body = GenerateParametricBody(options);
-  testing::ScannedBodyOptions scan_options;
-  scan_options.scan_seed = c.seed;
-  const testing::ScannedBody scan = testing::ScanAndClean(scan_options, body);
+  const testing::ScannedBody scan = ScannedParametric(c.seed, c.arm_deg);
   const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
   ExpectWithin(set, scan.truth, kParametricA, "parametric seed " + std::to_string(c.seed));
 }
@@ -102,13 +107,7 @@ INSTANTIATE_TEST_SUITE_P(APose, ParametricLandmarks,
 // round the true wrists are the arms', those round the true waist and hip
 // points the trunk's, and FindBodyParts gives what DetectLandmarks found.
 TEST(ParametricLandmarks, ArmsBesideTheTrunkAreTheirOwnPart) {
-  ParametricBodyOptions options;
-  options.seed = 4;
-  options.arm_abduction_deg = 15;
-  const Body body = GenerateParametricBody(options);
-  testing::ScannedBodyOptions scan_options;
-  scan_options.scan_seed = 4;
-  const testing::ScannedBody scan = testing::ScanAndClean(scan_options, body);
+  const testing::ScannedBody scan = ScannedParametric(4, 15);
   const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
   ASSERT_EQ(set.parts.size(), static_cast<std::size_t>(scan.cloud.size()));
   EXPECT_TRUE(FindBodyParts(scan.cloud) == set.parts);
@@ -129,13 +128,7 @@ TEST(ParametricLandmarks, ArmsBesideTheTrunkAreTheirOwnPart) {
 }
 
 TEST(ParametricLandmarks, TPose) {
-  ParametricBodyOptions options;
-  options.seed = 3;
-  options.arm_abduction_deg = 90;
-  const Body body = GenerateParametricBody(options);
-  testing::ScannedBodyOptions scan_options;
-  scan_options.scan_seed = 3;
-  const testing::ScannedBody scan = testing::ScanAndClean(scan_options, body);
+  const testing::ScannedBody scan = ScannedParametric(3, 90);
   const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
   // The T-posed hands are not in the cleaned cloud (it ends ~490 mm from the
   // shoulder; booth view or cleaning, not checked): the arm's end points must be
