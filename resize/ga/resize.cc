@@ -317,22 +317,21 @@ ResizeResult Resize(const ResizeOptions& options, const Pattern& given_base,
   const std::vector<double> scales = ProportionalScales(base, body);
   const Eigen::VectorXd seed = SeedGenes(base, blocks, scales);
   result.seed = Merge(full, index, ScalePieces(base, scales));
-  result.seed_objectives = model.Evaluate(seed, true);
   Eigen::VectorXd graded = seed;
   if (options.graded_start) {
     const GradeResult g = Grade(options.grader_options, model);
     graded = g.genes;
     result.graded_constraint_mm = g.max_constraint_mm;
-  } else {
+    if (options.shape_from_graded) {
+      model.SetShapeReference(graded);
+      result.shape_reference = "graded start";
+    }
+  }
+  result.seed_objectives = model.Evaluate(seed, true);
+  if (!options.graded_start)
     result.graded_constraint_mm = std::max(result.seed_objectives.max_measurement_mm,
                                            result.seed_objectives.max_seam_length_mm);
-  }
   result.graded = Merge(full, index, ApplyGenes(base, blocks, graded));
-  if (options.graded_start && options.shape_from_graded) {
-    model.SetShapeReference(graded);
-    result.shape_reference = "graded start";
-    result.seed_objectives = model.Evaluate(seed, true);
-  }
   result.graded_objectives = model.Evaluate(graded, true);
   Eigen::VectorXd genes = graded;
   if (options.generations > 0) {

@@ -69,15 +69,6 @@ std::vector<int> CapRun(const Piece& piece) {
 
 }  // namespace
 
-std::vector<int> ForwardRun(int from, int to, int n) {
-  std::vector<int> run;
-  for (int i = from;; i = (i + 1) % n) {
-    run.push_back(i);
-    if (i == to || static_cast<int>(run.size()) > n) break;
-  }
-  return run;
-}
-
 std::vector<NotchRun> NotchRuns(const Pattern& pattern, int p) {
   const Piece& piece = pattern.pieces[p];
   const int n = piece.num_vertices();

@@ -28,9 +28,6 @@ struct NotchRun {
   double fraction = 0;   // outline length from..notch / from..to in the pattern it came from
 };
 
-// Outline vertices walked forward from `from` to `to` inclusive.
-std::vector<int> ForwardRun(int from, int to, int num_vertices);
-
 // The notch runs of piece `piece` of `pattern`, fractions measured on that
 // piece. Notches at a structure point, and notches of a piece with fewer
 // than two structure points, have none.

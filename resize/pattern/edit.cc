@@ -12,16 +12,6 @@ namespace {
 
 int Wrap(int i, int n) { return ((i % n) + n) % n; }
 
-// Outline indices from..to walking forward (inclusive).
-std::vector<int> Forward(int from, int to, int n) {
-  std::vector<int> run;
-  for (int i = from;; i = (i + 1) % n) {
-    run.push_back(i);
-    if (i == to || static_cast<int>(run.size()) > n) break;
-  }
-  return run;
-}
-
 // Largest distance of the run's inner vertices from its chord (mm).
 double ChordDeviation(const Outline& o, const std::vector<int>& run) {
   const Eigen::Vector2d a = o.row(run.front()), b = o.row(run.back());
@@ -39,7 +29,7 @@ double ChordDeviation(const Outline& o, const std::vector<int>& run) {
 }
 
 bool Overlaps(const StraightRun& a, const StraightRun& b, int n) {
-  const std::vector<int> ra = Forward(a.from, a.to, n), rb = Forward(b.from, b.to, n);
+  const std::vector<int> ra = ForwardRun(a.from, a.to, n), rb = ForwardRun(b.from, b.to, n);
   int shared = 0;
   for (int v : ra) shared += std::count(rb.begin(), rb.end(), v) ? 1 : 0;
   return shared >= 2;
@@ -293,7 +283,7 @@ void InferStructure(const StructureOptions& options, Pattern* pattern) {
     for (int i = 0; i < n; ++i) {
       int j = i + 2;
       while (j - i < n &&
-             ChordDeviation(o, Forward(i, Wrap(j, n), n)) <= options.straight_tolerance_mm)
+             ChordDeviation(o, ForwardRun(i, Wrap(j, n), n)) <= options.straight_tolerance_mm)
         ++j;
       const int end = j - 1;  // last vertex that kept the run straight
       if (end - i < 1) continue;
@@ -302,7 +292,7 @@ void InferStructure(const StructureOptions& options, Pattern* pattern) {
       found.push_back(run);
     }
     auto inside = [&](const StraightRun& a, const StraightRun& b) {  // a within b
-      const std::vector<int> ra = Forward(a.from, a.to, n), rb = Forward(b.from, b.to, n);
+      const std::vector<int> ra = ForwardRun(a.from, a.to, n), rb = ForwardRun(b.from, b.to, n);
       for (int v : ra)
         if (!std::count(rb.begin(), rb.end(), v)) return false;
       return true;
@@ -317,7 +307,7 @@ void InferStructure(const StructureOptions& options, Pattern* pattern) {
       if (!contained) runs.push_back(r);
     }
     for (const StraightRun& r : runs) {
-      if (Forward(r.from, r.to, n).size() < 3) continue;  // one edge cannot kink
+      if (ForwardRun(r.from, r.to, n).size() < 3) continue;  // one edge cannot kink
       bool known = false;
       for (const StraightRun& q : piece.straight) known = known || Overlaps(r, q, n);
       if (!known) piece.straight.push_back(r);

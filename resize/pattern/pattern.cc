@@ -35,6 +35,12 @@ std::vector<int> SeamIndices(const SeamSide& side, int n) {
   return indices;
 }
 
+std::vector<int> ForwardRun(int from, int to, int n) {
+  SeamSide side;
+  side.from = from, side.to = to, side.forward = true;
+  return SeamIndices(side, n);
+}
+
 double TermLength(const Piece& piece, const BindingTerm& term) {
   const int a = piece.FindLandmark(term.from), b = piece.FindLandmark(term.to);
   if (term.path == BindingTerm::Path::kOutline)

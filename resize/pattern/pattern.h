@@ -148,6 +148,10 @@ struct Pattern {
 // Vertex indices of a seam side, in stitch order.
 std::vector<int> SeamIndices(const SeamSide& side, int num_vertices);
 
+// Outline vertices walked forward from `from` to `to` inclusive (the
+// indices of a forward seam side between them).
+std::vector<int> ForwardRun(int from, int to, int num_vertices);
+
 // Length of a binding term on `piece` (mm).
 double TermLength(const Piece& piece, const BindingTerm& term);
 
