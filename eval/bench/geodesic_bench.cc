@@ -514,8 +514,7 @@ int Main(int argc, char** argv) {
   std::printf("point field: fit_points %d, fit_wedge_deg %g, surface_offset_fraction %g\n",
               g_options.point_field.fit_points, g_options.point_field.fit_wedge_deg,
               g_options.point_field.surface_offset_fraction);
-  double load[3] = {0, 0, 0};
-  if (getloadavg(load, 3) > 0) std::printf("load average at start: %.2f\n", load[0]);
+  PrintLoadAverage("at start");
   PrintHeader();
   const std::filesystem::path meshes = shared / "data" / "meshes";
   const bool have_meshes = std::filesystem::exists(meshes / "makehuman-body-remesh-116k.off");

@@ -57,9 +57,7 @@ int Main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--seed"))
       options.seed = std::stoull(argv[i + 1]);
   }
-  double load[3] = {0, 0, 0};
-  if (getloadavg(load, 3) > 0)
-    std::printf("load average at start: %.2f (1 min), %.2f (5 min)\n", load[0], load[1]);
+  bespoke::PrintLoadAverage("at start");
   std::printf("population %d, generations %d, hardware threads %d\n\n", options.population,
               options.generations,
               static_cast<int>(

@@ -88,13 +88,6 @@ std::string Fixed(double v) {
   return text;
 }
 
-void PrintLoad(const char* when) {
-  double load[3] = {0, 0, 0};
-  if (getloadavg(load, 3) > 0)
-    std::printf("load average %s: %.2f (1 min), %.2f (5 min), %.2f (15 min)\n", when, load[0],
-                load[1], load[2]);
-}
-
 struct Case {
   std::string name;
   std::vector<std::string> input;  // the pattern and measurement arguments
@@ -147,7 +140,7 @@ int Main(int argc, char** argv) {
   const fs::path scratch =
       fs::temp_directory_path() / ("resize_cli_bench." + std::to_string(getpid()));
   fs::create_directories(scratch);
-  PrintLoad("at start");
+  bespoke::PrintLoadAverage("at start");
   std::printf("%s resize, population %s, generations %s, best of %d run(s)\n\n", bespoke.c_str(),
               population.c_str(), generations.c_str(), repeats);
   if (!compare.empty()) std::printf("compared with %s (all CPUs)\n", compare.c_str());
@@ -177,7 +170,7 @@ int Main(int argc, char** argv) {
     std::fflush(stdout);
   }
   std::printf("\n");
-  PrintLoad("at end");
+  bespoke::PrintLoadAverage("at end");
   fs::remove_all(scratch);
   return 0;
 }
