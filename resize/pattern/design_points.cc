@@ -4,15 +4,10 @@
 #include <cmath>
 
 #include "resize/pattern/edit.h"
+#include "resize/pattern/geometry.h"
 
 namespace bespoke {
 namespace {
-
-double RunLength(const Outline& o, const std::vector<int>& run) {
-  double length = 0;
-  for (size_t k = 0; k + 1 < run.size(); ++k) length += (o.row(run[k + 1]) - o.row(run[k])).norm();
-  return length;
-}
 
 // Per vertex of piece `p`: whether it is a structure point (see the header).
 std::vector<bool> StructurePoints(const Pattern& pattern, int p) {
@@ -84,8 +79,8 @@ std::vector<NotchRun> NotchRuns(const Pattern& pattern, int p) {
     for (int k = 1; k < n && r.to < 0; ++k)
       if (s[(notch + k) % n]) r.to = (notch + k) % n;
     if (r.from < 0 || r.to < 0 || r.from == r.to) continue;
-    const double to_notch = RunLength(piece.outline, ForwardRun(r.from, notch, n));
-    const double total = to_notch + RunLength(piece.outline, ForwardRun(notch, r.to, n));
+    const double to_notch = OutlineDistance(piece.outline, r.from, notch);
+    const double total = to_notch + OutlineDistance(piece.outline, notch, r.to);
     if (total < 1e-9) continue;
     r.fraction = to_notch / total;
     runs.push_back(r);
@@ -94,9 +89,8 @@ std::vector<NotchRun> NotchRuns(const Pattern& pattern, int p) {
 }
 
 double NotchShift(const Outline& outline, const NotchRun& run) {
-  const int n = static_cast<int>(outline.rows());
-  const double to_notch = RunLength(outline, ForwardRun(run.from, run.notch, n));
-  const double after = RunLength(outline, ForwardRun(run.notch, run.to, n));
+  const double to_notch = OutlineDistance(outline, run.from, run.notch);
+  const double after = OutlineDistance(outline, run.notch, run.to);
   return to_notch - run.fraction * (to_notch + after);
 }
 
