@@ -23,50 +23,67 @@ double LoopArea(const SectionLoop& loop) {
   return std::abs(0.5 * a);
 }
 
-// The trunk's loop at height z: the closed loop of largest area.
-SectionLoop TrunkLoop(const TriangleMesh& mesh, double z) {
+// The trunk's section at height z: the closed loop of largest area with the
+// loops a tape round it also passes over (TrunkLoopIndices: a heavy breast
+// the plane cuts apart from the chest wall), main loop first.
+std::vector<SectionLoop> TrunkSection(const TriangleMesh& mesh, double z) {
   const std::vector<SectionLoop> loops = SectionLoops(mesh, Eigen::Vector3d(0, 0, z), kUp);
-  const SectionLoop* best = nullptr;
+  int best = -1;
   double best_area = 0;
-  for (const SectionLoop& l : loops) {
+  for (int i = 0; i < static_cast<int>(loops.size()); ++i) {
+    const SectionLoop& l = loops[static_cast<std::size_t>(i)];
     const double a = l.closed ? LoopArea(l) : 0;
-    if (a > best_area) best = &l, best_area = a;
+    if (a > best_area) best = i, best_area = a;
   }
-  if (!best) throw InputError("defined landmarks: no trunk section at z = " + std::to_string(z));
-  return *best;
+  if (best < 0) throw InputError("defined landmarks: no trunk section at z = " + std::to_string(z));
+  std::vector<SectionLoop> out;
+  for (int i : TrunkLoopIndices(loops, best)) out.push_back(loops[static_cast<std::size_t>(i)]);
+  return out;
 }
 
-// The loop's crossings with the plane x = x0, as points; front = largest y.
-std::vector<Eigen::Vector3d> CrossingsAtX(const SectionLoop& loop, double x0) {
+// The section's crossings with the plane x = x0, as points; front =
+// largest y.
+std::vector<Eigen::Vector3d> CrossingsAtX(const std::vector<SectionLoop>& section, double x0) {
   std::vector<Eigen::Vector3d> out;
-  const Eigen::Index n = loop.points.rows();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Eigen::Vector3d a = loop.points.row(i), b = loop.points.row((i + 1) % n);
-    if ((a.x() - x0) * (b.x() - x0) > 0 || a.x() == b.x()) continue;
-    const double t = (x0 - a.x()) / (b.x() - a.x());
-    out.push_back(a + t * (b - a));
+  for (const SectionLoop& loop : section) {
+    const Eigen::Index n = loop.points.rows();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const Eigen::Vector3d a = loop.points.row(i), b = loop.points.row((i + 1) % n);
+      if ((a.x() - x0) * (b.x() - x0) > 0 || a.x() == b.x()) continue;
+      const double t = (x0 - a.x()) / (b.x() - a.x());
+      out.push_back(a + t * (b - a));
+    }
   }
   if (out.empty())
     throw InputError("defined landmarks: a trunk section misses x = " + std::to_string(x0));
   return out;
 }
 
-Eigen::Vector3d FrontAt(const SectionLoop& loop, double x0) {
-  const auto c = CrossingsAtX(loop, x0);
+Eigen::Vector3d FrontAt(const std::vector<SectionLoop>& section, double x0) {
+  const auto c = CrossingsAtX(section, x0);
   return *std::max_element(c.begin(), c.end(),
                            [](const auto& a, const auto& b) { return a.y() < b.y(); });
 }
 
-Eigen::Vector3d BackAt(const SectionLoop& loop, double x0) {
-  const auto c = CrossingsAtX(loop, x0);
+Eigen::Vector3d BackAt(const std::vector<SectionLoop>& section, double x0) {
+  const auto c = CrossingsAtX(section, x0);
   return *std::min_element(c.begin(), c.end(),
                            [](const auto& a, const auto& b) { return a.y() < b.y(); });
 }
 
-Eigen::Vector3d Extreme(const SectionLoop& loop, int axis, double sign) {
-  Eigen::Index best = 0;
-  (sign * loop.points.col(axis).array()).maxCoeff(&best);
-  return loop.points.row(best);
+// The section's point farthest along `sign` * axis.
+Eigen::Vector3d Extreme(const std::vector<SectionLoop>& section, int axis, double sign) {
+  Eigen::Vector3d best = section.front().points.row(0);
+  for (const SectionLoop& loop : section)
+    for (Eigen::Index i = 0; i < loop.points.rows(); ++i)
+      if (sign * loop.points(i, axis) > sign * best(axis)) best = loop.points.row(i);
+  return best;
+}
+
+double SectionGirth(const std::vector<SectionLoop>& section) {
+  std::vector<int> all(section.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  return LoopHullPerimeter(MergedLoops(section, all), kUp);
 }
 
 // The z in [lo, hi] maximising score(z): a scan in `step` steps, then one
@@ -103,7 +120,7 @@ double LegGirth(const TriangleMesh& mesh, double z, const Eigen::Vector3d& near,
   const int i = NearestLoop(loops, Eigen::Vector3d(near.x(), near.y(), z));
   if (i < 0) return -1;
   const SectionLoop& loop = loops[static_cast<std::size_t>(i)];
-  if (back) *back = Extreme(loop, 1, -1);
+  if (back) *back = Extreme({loop}, 1, -1);
   return LoopHullPerimeter(loop, kUp);
 }
 
@@ -120,41 +137,49 @@ DefinedLevels PlaceDefinedLandmarks(const DefinedLandmarkOptions& options,
   const TriangleMesh& mesh = body->mesh;
   const double step = options.step_mm;
   DefinedLevels levels;
-  const double crotch = At(*body, "crotch").z(), under_bust = At(*body, "under_bust").z();
-  // Hip: the section reaching furthest back, from just above the crotch to
-  // the middle of the crotch-to-under-bust span.
-  levels.hip_mm = ArgMax(crotch + 20, crotch + 0.5 * (under_bust - crotch), step,
-                         [&](double z) { return -TrunkLoop(mesh, z).points.col(1).minCoeff(); });
-  const SectionLoop hip = TrunkLoop(mesh, levels.hip_mm);
-  Place(body, "hip_back", BackAt(hip, 0));
-  Place(body, "hip_right", Extreme(hip, 0, 1));
-  Place(body, "hip_left", Extreme(hip, 0, -1));
-  // Waist: the narrowest trunk section in its band.
-  const double span = under_bust - levels.hip_mm;
-  levels.waist_mm = ArgMax(levels.hip_mm + 0.3 * span, levels.hip_mm + 0.85 * span, step,
-                           [&](double z) { return -LoopHullPerimeter(TrunkLoop(mesh, z), kUp); });
-  const SectionLoop waist = TrunkLoop(mesh, levels.waist_mm);
-  Place(body, "front_waist", FrontAt(waist, 0));
-  Place(body, "back_waist", BackAt(waist, 0));
-  Place(body, "side_waist_right", Extreme(waist, 0, 1));
-  Place(body, "side_waist_left", Extreme(waist, 0, -1));
-  levels.middle_hip_mm = 0.5 * (levels.hip_mm + levels.waist_mm);
-  Place(body, "middle_hip_front", FrontAt(TrunkLoop(mesh, levels.middle_hip_mm), 0));
-  // Under-bust: the sharpest bend of the front profile under the bust points.
+  // Under-bust: the sharpest bend of the front profile under the bust
+  // points, the section's front taken over every loop a tape passes (a heavy
+  // breast's loop included), so a hanging breast gives its underside.
   const Eigen::Vector3d bust_r = At(*body, "bust_right"), bust_l = At(*body, "bust_left");
   const double bust_z = 0.5 * (bust_r.z() + bust_l.z());
   const auto depth = [&](double z) {
-    const SectionLoop loop = TrunkLoop(mesh, z);
-    // In the bust points' sagittal planes, kept within the section's width.
-    const double lo = 0.8 * loop.points.col(0).minCoeff(), hi = 0.8 * loop.points.col(0).maxCoeff();
-    return 0.5 * (FrontAt(loop, std::clamp(bust_r.x(), lo, hi)).y() +
-                  FrontAt(loop, std::clamp(bust_l.x(), lo, hi)).y());
+    const std::vector<SectionLoop> section = TrunkSection(mesh, z);
+    // In the bust points' sagittal planes, kept within the main loop's width.
+    const Eigen::MatrixX3d& main = section.front().points;
+    const double lo = 0.8 * main.col(0).minCoeff(), hi = 0.8 * main.col(0).maxCoeff();
+    return 0.5 * (FrontAt(section, std::clamp(bust_r.x(), lo, hi)).y() +
+                  FrontAt(section, std::clamp(bust_l.x(), lo, hi)).y());
   };
   const double h = 2 * step;
   levels.under_bust_mm = ArgMax(bust_z - 160, bust_z - 20, step, [&](double z) {
     return depth(z + h) + depth(z - h) - 2 * depth(z);  // convex corner of the profile
   });
-  Place(body, "under_bust", FrontAt(TrunkLoop(mesh, levels.under_bust_mm), 0));
+  // A hanging breast: the bend lies within `h` of its underside and its tip
+  // can still be in the section; the tape goes just below it.
+  for (int k = 0; k < 120 && TrunkSection(mesh, levels.under_bust_mm).size() > 1; ++k)
+    levels.under_bust_mm -= 0.5;
+  Place(body, "under_bust", FrontAt(TrunkSection(mesh, levels.under_bust_mm), 0));
+  const double crotch = At(*body, "crotch").z(), under_bust = levels.under_bust_mm;
+  // Hip: the section reaching furthest back, from just above the crotch to
+  // the middle of the crotch-to-under-bust span.
+  levels.hip_mm = ArgMax(crotch + 20, crotch + 0.5 * (under_bust - crotch), step,
+                         [&](double z) { return -Extreme(TrunkSection(mesh, z), 1, -1).y(); });
+  const std::vector<SectionLoop> hip = TrunkSection(mesh, levels.hip_mm);
+  Place(body, "hip_back", BackAt(hip, 0));
+  Place(body, "hip_right", Extreme(hip, 0, 1));
+  Place(body, "hip_left", Extreme(hip, 0, -1));
+  // Waist: the narrowest trunk section between the iliac crest and the
+  // lowest rib, placed at 30 % and 85 % of the hip-to-under-bust height.
+  const double span = under_bust - levels.hip_mm;
+  levels.waist_mm = ArgMax(levels.hip_mm + 0.3 * span, levels.hip_mm + 0.85 * span, step,
+                           [&](double z) { return -SectionGirth(TrunkSection(mesh, z)); });
+  const std::vector<SectionLoop> waist = TrunkSection(mesh, levels.waist_mm);
+  Place(body, "front_waist", FrontAt(waist, 0));
+  Place(body, "back_waist", BackAt(waist, 0));
+  Place(body, "side_waist_right", Extreme(waist, 0, 1));
+  Place(body, "side_waist_left", Extreme(waist, 0, -1));
+  levels.middle_hip_mm = 0.5 * (levels.hip_mm + levels.waist_mm);
+  Place(body, "middle_hip_front", FrontAt(TrunkSection(mesh, levels.middle_hip_mm), 0));
   // Crotch: the lowest seam vertex below the hip level.
   int lowest = -1;
   for (const int v : seam)

@@ -3,27 +3,31 @@
 // level or an extreme of the surface, the level is searched on each body.
 //
 // Sections are exact horizontal mesh sections (mesh_section.h); the trunk's
-// section at a level is its loop of largest area (arms and hands are
-// separate loops); a girth level is judged by the loop's convex hull
-// perimeter (the tape). Levels are searched in step_mm steps, then refined
-// to step_mm / 8 around the best.
+// section at a level is its loop of largest area with the loops a tape round
+// it passes over (TrunkLoopIndices: a heavy breast the plane cuts apart from
+// the chest wall; arms and hands are separate loops beside it); a girth
+// level is judged by the section's convex hull perimeter (the tape). Levels
+// are searched in step_mm steps, then refined to step_mm / 8 around the best.
 //
-//   hip (hip_back, hip_right, hip_left): the level of the most prominent
-//     buttock (the trunk section reaching furthest back, -y) between the
-//     crotch and the waist search band; hip_back the back-most point of that
-//     section on x = 0, hip_* its lateral extremes.
-//   waist (front_waist, back_waist, side_waist_*): the narrowest trunk
-//     section between the lowest rib and the iliac crest, taken as the band
-//     from 30 % to 85 % of the way from the hip level up to the under-bust
-//     datum point (proxies: the iliac crest lies above the hip level, the
-//     lowest rib below the breasts); front and back on x = 0, sides the
-//     lateral extremes.
-//   middle_hip_front: the front of the trunk section on x = 0 midway between
-//     the hip and waist levels.
 //   under_bust: the inframammary fold: in the sagittal plane of the bust
 //     points, the level in the 20-160 mm below them where the front profile
 //     bends most sharply (largest second difference of its depth); the
-//     point on x = 0 at that level.
+//     point on x = 0 at that level. A hanging breast's underside is that
+//     bend; where the breast is a loop of its own there, the level moves
+//     down (0.5 mm steps, at most 60 mm) until the section is free of it:
+//     the tape goes just below the breasts.
+//   hip (hip_back, hip_right, hip_left): the level of the most prominent
+//     buttock (the trunk section reaching furthest back, -y) between 20 mm
+//     above the crotch and halfway up to the under-bust; hip_back the
+//     back-most point of that section on x = 0, hip_* its lateral extremes.
+//   waist (front_waist, back_waist, side_waist_*): the narrowest trunk
+//     section between the lowest rib and the iliac crest, taken as the band
+//     from 30 % to 85 % of the way from the hip level up to the under-bust
+//     level (proxies: the iliac crest lies above the hip level, the lowest
+//     rib below the breasts); front and back on x = 0, sides the lateral
+//     extremes.
+//   middle_hip_front: the front of the trunk section on x = 0 midway between
+//     the hip and waist levels.
 //   crotch: the lowest point of the trunk's mid-sagittal line, the seam
 //     vertices the caller names (`seam`), below the hip level.
 //   calf_*: the back of the leg at the level of its largest girth between
@@ -55,9 +59,9 @@ struct DefinedLevels {
 
 // Moves the defined datum points of `body` (in place) to where their
 // definitions put them. `seam`: the mesh's mid-sagittal vertices (for the
-// crotch; empty keeps the crotch). Needs the landmarks named above and
-// under_bust, bust_*, knee_*, ankle_inside_* to start from; InputError when
-// one is missing or a section is empty.
+// crotch; empty keeps the crotch). Needs crotch, bust_*, knee_*,
+// ankle_inside_* and calf_* to start from; InputError when one is missing or
+// a section is empty.
 DefinedLevels PlaceDefinedLandmarks(const DefinedLandmarkOptions& options,
                                     const std::vector<int>& seam, Body* body);
 

@@ -186,6 +186,37 @@ double LoopHullPerimeter(const SectionLoop& loop, const Eigen::Vector3d& plane_n
   return ConvexHullPerimeter(projected);
 }
 
+std::vector<int> TrunkLoopIndices(const std::vector<SectionLoop>& loops, int main) {
+  if (main < 0 || main >= static_cast<int>(loops.size())) return {};
+  const Eigen::MatrixX3d& trunk = loops[static_cast<std::size_t>(main)].points;
+  std::vector<int> out{main};
+  if (trunk.rows() == 0) return out;
+  const double lo = trunk.col(0).minCoeff(), hi = trunk.col(0).maxCoeff();
+  const double margin = 0.1 * (hi - lo);
+  for (int i = 0; i < static_cast<int>(loops.size()); ++i) {
+    const SectionLoop& loop = loops[static_cast<std::size_t>(i)];
+    if (i == main || !loop.closed || loop.points.rows() < 3) continue;
+    const double x = loop.points.col(0).mean();
+    if (x > lo + margin && x < hi - margin) out.push_back(i);
+  }
+  return out;
+}
+
+SectionLoop MergedLoops(const std::vector<SectionLoop>& loops, const std::vector<int>& indices) {
+  SectionLoop all;
+  Eigen::Index rows = 0;
+  for (int i : indices) rows += loops.at(static_cast<std::size_t>(i)).points.rows();
+  all.points.resize(rows, 3);
+  rows = 0;
+  for (int i : indices) {
+    const SectionLoop& loop = loops[static_cast<std::size_t>(i)];
+    all.points.middleRows(rows, loop.points.rows()) = loop.points;
+    rows += loop.points.rows();
+    all.closed = all.closed && loop.closed;
+  }
+  return all;
+}
+
 double LoopLength(const SectionLoop& loop) {
   const Eigen::Index k = loop.points.rows();
   double length = 0;

@@ -50,6 +50,18 @@ int EnclosingLoop(const std::vector<SectionLoop>& loops, const Eigen::Vector3d& 
 // with normal `plane_normal` (mm): the girth a tape pulled tight would read.
 double LoopHullPerimeter(const SectionLoop& loop, const Eigen::Vector3d& plane_normal);
 
+// The loops that make up a trunk girth's section with its main loop
+// `loops[main]`: main first, then every other closed loop whose centroid
+// lies within the middle 80 % of main's extent along x (body frame) - a
+// heavy breast or a fold of the belly that the plane cuts apart from the
+// chest wall. A tape round the trunk passes over them; an arm's loop, beside
+// the trunk, stays out. Empty when `main` is out of range.
+std::vector<int> TrunkLoopIndices(const std::vector<SectionLoop>& loops, int main);
+
+// The points of every loop in `indices`, one loop after another: for hulls
+// and extremes, not a polyline. Closed when every one of them is.
+SectionLoop MergedLoops(const std::vector<SectionLoop>& loops, const std::vector<int>& indices);
+
 // Length of the loop's own polyline (closing segment included when closed).
 double LoopLength(const SectionLoop& loop);
 

@@ -116,6 +116,31 @@ TEST(MeshSection, NearestLoopSelectsTheBodyPartNotTheHands) {
   EXPECT_GT(LoopHullPerimeter(SectionLoop{all, true}, {0, 0, 1}), trunk_polygon + 100);
 }
 
+// A breast the plane cuts apart from the chest wall is part of the trunk's
+// girth (a tape passes over it); the arms beside the trunk are not.
+TEST(MeshSection, TrunkLoopsTakeALoopInFrontButNotTheArms) {
+  const TriangleMesh trunk = Cylinder({0, 0, 0}, 170, 800, 96, 17);
+  const TriangleMesh breast = Cylinder({70, 240, 400}, 50, 100, 64, 3);
+  const TriangleMesh right_arm = Cylinder({260, 0, 300}, 40, 400, 32, 5);
+  const TriangleMesh left_arm = Cylinder({-260, 0, 300}, 40, 400, 32, 5);
+  const TriangleMesh m = Concatenate({trunk, right_arm, breast, left_arm});
+  const auto loops = SectionLoops(m, {0, 0, 450}, {0, 0, 1});
+  ASSERT_EQ(loops.size(), 4u);
+  const int main = NearestLoop(loops, {0, -170, 450});
+  ASSERT_GE(main, 0);
+  const std::vector<int> parts = TrunkLoopIndices(loops, main);
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_EQ(parts[0], main);
+  EXPECT_NEAR(loops[parts[1]].points.col(1).mean(), 240, 1);  // the breast
+  // Its hull: the trunk's 96-gon wrapped round the breast's 64-gon, longer
+  // than the trunk's alone and shorter than the two perimeters together.
+  const double trunk_polygon = 96 * 2 * 170 * std::sin(M_PI / 96);
+  const double merged = LoopHullPerimeter(MergedLoops(loops, parts), {0, 0, 1});
+  EXPECT_GT(merged, trunk_polygon + 20);
+  EXPECT_LT(merged, trunk_polygon + 64 * 2 * 50 * std::sin(M_PI / 64));
+  EXPECT_TRUE(TrunkLoopIndices(loops, 7).empty());
+}
+
 TEST(MeshSection, OpenMeshesGiveOpenChainsAndMissesGiveNothing) {
   TriangleMesh m = Cylinder({0, 0, 0}, 50, 100, 16, 3);
   // Drop the top cap's faces and 2 side faces: the mid-height cut opens.

@@ -1,6 +1,7 @@
 #include "oracle/truth/reference_measurements.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -82,11 +83,18 @@ ReferenceMeasurement Girth(const ReferenceOptions& options, const MeasurementDef
     loops = SectionLoops(body.mesh, point, normal);
     chosen = ChooseLoop(loops, m, body, normal);
   }
-  const SectionLoop& loop = loops[static_cast<std::size_t>(chosen)];
+  // Round the trunk the tape also passes over the loops the plane cuts
+  // apart in front of or behind it (a heavy breast hanging over the chest).
+  const bool trunk = m.plane == GirthPlane::kHorizontal && (m.side == "centre" || m.side == "both");
+  const std::vector<int> parts = trunk ? TrunkLoopIndices(loops, chosen) : std::vector<int>{chosen};
+  const SectionLoop loop = MergedLoops(loops, parts);
   out.value_mm = LoopHullPerimeter(loop, normal);
   if (!loop.closed) out.flags.push_back("section_open");
-  if (DistanceToLoop(loop, Landmark(body, m.datum[0])) > options.datum_tolerance_mm)
-    out.flags.push_back("datum_off_section");
+  double datum_distance = std::numeric_limits<double>::infinity();
+  for (int i : parts)
+    datum_distance = std::min(datum_distance, DistanceToLoop(loops[static_cast<std::size_t>(i)],
+                                                             Landmark(body, m.datum[0])));
+  if (datum_distance > options.datum_tolerance_mm) out.flags.push_back("datum_off_section");
   if (!m.arms.empty() && ReachesPastDatum(loop, m, body))
     out.flags.push_back("section_includes_arms");
   if (m.side == "right" && loop.points.col(0).minCoeff() <= 0)
