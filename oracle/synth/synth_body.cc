@@ -7,6 +7,7 @@
 #include "oracle/makehuman/makehuman_body.h"
 #include "oracle/makehuman/makehuman_model.h"
 #include "oracle/makehuman/makehuman_pose.h"
+#include "oracle/truth/defined_landmarks.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
@@ -74,7 +75,9 @@ Body SynthBodyGenerator::Generate(const SynthBodyOptions& options) {
     }
     if (!options.posture.empty()) ApplyParametricPosture(options.posture, &p);
     p.Check();
-    return GenerateParametricBody(p);
+    Body body = GenerateParametricBody(p);
+    PlaceDefinedLandmarks(DefinedLandmarkOptions(), {}, &body);
+    return body;
   }
   const std::filesystem::path dir =
       options.makehuman_dir.empty() ? DefaultMakeHumanDir() : options.makehuman_dir;
