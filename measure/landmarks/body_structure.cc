@@ -102,6 +102,28 @@ void LabelNodes(const BodyGraph& g, double cell_mm, std::vector<Part>* label) {
   }
 }
 
+// The arm's nodes: those nearer the hand than the armpit corner is, and,
+// lateral of the corner, those whose distance grows less from the corner
+// going out from the hand than going out from the trunk's ring (`d0`): the
+// outside of the upper arm, which a threshold on the hand's distance alone
+// leaves to the trunk (its contour tilts down the outside of the arm, so an
+// arm resting on a heavy trunk would join the trunk's girths at the bust).
+void LabelArm(const BodyGraph& g, const std::vector<double>& d0,
+              const std::vector<double>& from_hand, int corner, int side, double cell_mm,
+              std::vector<Part>* label) {
+  const size_t k = static_cast<size_t>(corner);
+  const double sign = side == 0 ? 1 : -1, corner_x = sign * g.Site(corner).x();
+  const Part arm = side == 0 ? Part::kArmRight : Part::kArmLeft;
+  for (int n = 0; n < g.size(); ++n) {
+    const size_t i = static_cast<size_t>(n);
+    if (!std::isfinite(from_hand[i])) continue;
+    const bool near_hand = from_hand[i] < from_hand[k] - cell_mm;
+    const bool outside =
+        sign * g.Site(n).x() > corner_x + cell_mm && from_hand[i] - from_hand[k] < d0[i] - d0[k];
+    if (near_hand || outside) (*label)[i] = arm;
+  }
+}
+
 }  // namespace
 
 BodyStructure FindBodyStructure(const BodyStructureOptions& o, const Eigen::MatrixX3d& points,
@@ -172,10 +194,7 @@ BodyStructure FindBodyStructure(const BodyStructureOptions& o, const Eigen::Matr
     if (corner < 0 || !std::isfinite(from_hand_node[side][static_cast<size_t>(corner)])) continue;
     s.has_armpit[side] = true;
     s.armpit[side] = g.Site(corner);
-    const double limit = from_hand_node[side][static_cast<size_t>(corner)] - o.graph.cell_mm;
-    for (int n = 0; n < g.size(); ++n)
-      if (from_hand_node[side][static_cast<size_t>(n)] < limit)
-        label[static_cast<size_t>(n)] = side == 0 ? Part::kArmRight : Part::kArmLeft;
+    LabelArm(g, d0, from_hand_node[side], corner, side, o.graph.cell_mm, &label);
   }
   LabelNodes(g, o.graph.cell_mm, &label);
   s.part.resize(static_cast<size_t>(points.rows()));

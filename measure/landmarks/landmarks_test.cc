@@ -18,6 +18,7 @@
 #include "measure/catalogue/catalogue.h"
 #include "oracle/body/parametric_body.h"
 #include "oracle/makehuman/makehuman_body.h"
+#include "oracle/makehuman/makehuman_pose.h"
 #include "oracle/scan_sim/scanned_body.h"
 #include "scanners/core/errors.h"
 #include "tests/support/test_support.h"
@@ -122,6 +123,24 @@ TEST(ParametricLandmarks, ArmsBesideTheTrunkAreTheirOwnPart) {
   };
   EXPECT_GE(share("wrist_right", ScanPart::kArmRight), 0.9);
   EXPECT_GE(share("wrist_left", ScanPart::kArmLeft), 0.9);
+  // Up to the armpit's height the arm's side of the armpit is all arm: the
+  // outside of the upper arm too, whose geodesic distance from the hand
+  // exceeds the armpit's.
+  for (const auto& [name, part] : {std::pair{"armpit_right", ScanPart::kArmRight},
+                                   std::pair{"armpit_left", ScanPart::kArmLeft}}) {
+    const Eigen::Vector3d armpit = scan.truth.at(name);
+    int lateral = 0, hits = 0;
+    for (Eigen::Index r = 0; r < scan.cloud.size(); ++r) {
+      const Eigen::Vector3d p = scan.cloud.points.row(r).transpose();
+      if (p.z() < armpit.z() - 40 || p.z() > armpit.z() || p.x() * armpit.x() < 0 ||
+          std::abs(p.x()) < std::abs(armpit.x()) + 40)
+        continue;
+      ++lateral, hits += set.parts[static_cast<std::size_t>(r)] == part;
+    }
+    ASSERT_GT(lateral, 50) << name;
+    EXPECT_GE(static_cast<double>(hits) / lateral, 0.95)
+        << name << ": " << hits << " of " << lateral;
+  }
   for (const char* name : {"front_waist", "back_waist", "side_waist_right", "side_waist_left",
                            "hip_right", "hip_left", "bust_right", "bust_left"})
     EXPECT_GE(share(name, ScanPart::kTrunk), 0.9) << name;
@@ -273,6 +292,40 @@ TEST(MakeHumanLandmarks, WithinToleranceOfTheTruth) {
   // The target is 10 mm; measured 13.0 mm on these two subjects and
   // 12.9 mm over ten (docs/landmarks.md): the gap is stated, not hidden.
   EXPECT_LE(median, 18.0) << "mm";
+}
+
+// A heavy body (MakeHuman full population, seed 1007: weight 0.78) whose
+// upper arms rest on the trunk's sides in the A-pose: at the bust, 30 mm
+// under the armpit, the arm's outside is the arm's (the hand's distance
+// alone left it to the trunk, and the bust girth took both arms in, 136 mm
+// long). No trunk point lies more than 20 mm beyond the true armpit.
+TEST(MakeHumanLandmarks, UpperArmsRestingOnAHeavyTrunkAreTheArms) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(shared / "data/bodies/makehuman");
+  MakeHumanBodyOptions options;
+  options.seed = 1007;
+  options.population = "full";
+  options.posture = ParseMakeHumanPosture("arms-30");
+  const Body body = GenerateMakeHumanBody(options, &model);
+  testing::ScannedBodyOptions scan_options;
+  scan_options.scan_seed = 1007;
+  const testing::ScannedBody scan = testing::ScanAndClean(scan_options, body);
+  const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
+  const double bust_z = scan.truth.at("bust_right").z();
+  for (const char* name : {"armpit_right", "armpit_left"}) {
+    const Eigen::Vector3d armpit = scan.truth.at(name);
+    ASSERT_LT(bust_z, armpit.z()) << name;
+    int lateral = 0, trunk = 0;
+    for (Eigen::Index r = 0; r < scan.cloud.size(); ++r) {
+      const Eigen::Vector3d p = scan.cloud.points.row(r).transpose();
+      if (std::abs(p.z() - bust_z) > 5 || p.x() * armpit.x() < 0 ||
+          std::abs(p.x()) < std::abs(armpit.x()) + 20)
+        continue;
+      ++lateral, trunk += set.parts[static_cast<std::size_t>(r)] == ScanPart::kTrunk;
+    }
+    ASSERT_GT(lateral, 50) << name;
+    EXPECT_LE(trunk, lateral / 50) << name << ": " << trunk << " of " << lateral << " are trunk";
+  }
 }
 
 TEST(Landmarks, EveryCatalogueLandmarkIsPlacedOrMissingWithAReason) {
