@@ -265,10 +265,14 @@ void Bust(Context* c, double* bust_z) {
       continue;
     }
     const double ax = sign * arm.armpit.x();
-    const int lo = SliceAt(c->slices, arm.armpit_z - 0.10 * h),
+    // The breast is sought from above the found armpit: where an arm rests
+    // on a heavy body's side the armpit is found low, and a breast hanging
+    // just under the true armpit would lie above the window.
+    const int top = SliceAt(c->slices, arm.armpit_z + 0.03 * h),
+              lo = SliceAt(c->slices, arm.armpit_z - 0.10 * h),
               hi = SliceAt(c->slices, arm.armpit_z - 0.02 * h);
     std::vector<int> candidates;
-    for (int s = lo; s <= hi; ++s) {
+    for (int s = lo; s <= top; ++s) {
       for (int r : c->TrunkRows(c->slices[static_cast<size_t>(s)])) {
         const double x = sign * c->points(r, 0);
         if (x > 0.3 * ax && x < ax) candidates.push_back(r);
@@ -277,12 +281,14 @@ void Bust(Context* c, double* bust_z) {
     // Breasts point forward and a little outward: the extreme along a
     // direction turned ~11 deg out from straight ahead.
     const Eigen::Vector3d dir = Eigen::Vector3d(sign * 0.2, 1, 0).normalized();
-    const double level = BreastLevel(*c, candidates, dir, lo, hi);
-    if (level > 0)
-      candidates.erase(
-          std::remove_if(candidates.begin(), candidates.end(),
-                         [&](int r) { return std::abs(c->points(r, 2) - level) > 15; }),
-          candidates.end());
+    const double level = BreastLevel(*c, candidates, dir, lo, top);
+    const double hi_z = c->slices[static_cast<size_t>(hi)].z;
+    candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
+                                    [&](int r) {
+                                      const double z = c->points(r, 2);
+                                      return level > 0 ? std::abs(z - level) > 15 : z > hi_z;
+                                    }),
+                     candidates.end());
     const int best = c->SmoothExtreme(candidates, dir, 10, 4);
     if (best < 0) {
       c->Missing(name, "no chest points below the armpit");
@@ -351,30 +357,35 @@ void FindTrunkLevels(Context* c) {
   const int buttock = c->SmoothExtreme(behind, -Eigen::Vector3d::UnitY(), 15, 5);
   if (buttock < 0) throw InputError("landmarks: no buttocks found above the crotch");
   const double hip_z = c->points(buttock, 2);
-  // Waist: the smallest convex-hull girth of the trunk between 3 % of
-  // stature above the hip level and 2 % below the under-bust level.
-  const double waist_top = under_z > 0 ? under_z - 0.02 * h : hip_z + 0.25 * h;
-  double waist_z = -1, best = kInf;
-  for (double z = hip_z + 0.03 * h; z <= waist_top; z += c->step) {
-    const std::vector<int> rows = c->TrunkRows(c->At(z));
-    if (rows.size() < 20) continue;
-    const double girth = HullPerimeter(c->points, rows);
-    if (girth < best) best = girth, waist_z = z;
-  }
-  if (waist_z < 0) waist_z = waist_top;  // no room between hip and under-bust: the fallback below
-  // No narrowing (the girth keeps falling up to the chest, common on men):
-  // the waist level from trunk proportions, the crotch-to-shoulder height
-  // split 0.455 : 0.545, the shoulder taken 7.8 % of stature above the armpit.
-  double waist_confidence = 0.8;
+  // Waist: the natural waist, the smallest convex-hull girth of the trunk
+  // between the iliac crest and the lowest rib, placed at 30 % and 85 % of
+  // the hip-to-under-bust height (the oracle's truth uses the same band).
+  // A girth that keeps falling to the band's top (no narrowing, common on
+  // men and on a belly) leaves the waist at the top: the lowest rib.
+  double waist_z = -1, waist_confidence = 0.8;
   std::string waist_method = "min_hull_girth";
-  if (waist_z > waist_top - 2 * c->step) {
+  const double span = under_z - hip_z;
+  if (under_z > 0 && span > 0.05 * h) {
+    const double waist_lo = hip_z + 0.3 * span, waist_top = hip_z + 0.85 * span;
+    double best = kInf;
+    for (double z = waist_lo; z <= waist_top; z += c->step) {
+      const std::vector<int> rows = c->TrunkRows(c->At(z));
+      if (rows.size() < 20) continue;
+      const double girth = HullPerimeter(c->points, rows);
+      if (girth < best) best = girth, waist_z = z;
+    }
+    if (waist_z > waist_top - 2 * c->step)
+      waist_confidence = 0.5, waist_method = "band_top_no_narrowing";
+  }
+  if (waist_z < 0) {
+    // No under-bust (or one found below the hip's reach): the waist from
+    // trunk proportions, the crotch-to-shoulder height split 0.455 : 0.545,
+    // the shoulder taken 7.8 % of stature above the armpit.
     double armpit_z = 0;
     for (const ArmInfo& arm : c->arm) armpit_z = std::max(armpit_z, arm.found ? arm.armpit_z : 0.0);
-    if (armpit_z > 0) {
-      waist_z = c->crotch_z + 0.455 * (armpit_z + 0.078 * h - c->crotch_z);
-      waist_confidence = 0.5;
-      waist_method = "proportion_no_narrowing";
-    }
+    waist_z = armpit_z > 0 ? c->crotch_z + 0.455 * (armpit_z + 0.078 * h - c->crotch_z)
+                           : hip_z + 0.15 * h;
+    waist_confidence = 0.5, waist_method = "proportion_no_under_bust";
   }
   PutSeam(c, "hip_back", hip_z, false, 0.85, "back_min_y");
   PutSeam(c, "front_waist", waist_z, true, waist_confidence, waist_method);
