@@ -87,15 +87,29 @@ void WriteLandmarkCsvs(const AccuracyReport& report, const fs::path& dir) {
   WriteFileAtomically(dir / "landmark_errors.csv", each.str());
 }
 
-// Every pair that ran, one line per pair x measurement; `pass` is empty for
-// a row shown only.
-void WritePostureCsv(const std::vector<const PostureComparison*>& pairs, const fs::path& file) {
+// The A/T pair: one line per measurement.
+void WritePostureCsv(const PostureComparison& posture, const fs::path& file) {
+  std::ostringstream out;
+  out << "measurement,kind,measured_a_mm,measured_b_mm,difference_mm,truth_a_mm,truth_b_mm,judged,"
+         "pass\n";
+  for (const PostureRow& r : posture.rows) {
+    out << Cell(r.name) << ',' << r.kind << ',' << FormatNumber(r.measured_a_mm) << ','
+        << FormatNumber(r.measured_b_mm) << ',' << FormatNumber(r.difference_mm) << ','
+        << FormatNumber(r.truth_a_mm) << ',' << FormatNumber(r.truth_b_mm) << ','
+        << (r.judged ? 1 : 0) << ',' << (r.judged ? (r.pass ? "pass" : "fail") : "") << '\n';
+  }
+  WriteFileAtomically(file, out.str());
+}
+
+// The posture test: one line per pair that ran x measurement; `pass` is
+// empty for a row shown only.
+void WritePostureTestCsv(const std::vector<PostureComparison>& pairs, const fs::path& file) {
   std::ostringstream out;
   out << "subject,reference_posture,posture,measurement,kind,iso_class,reference_mm,posture_mm,"
          "difference_mm,limit_mm,pass,truth_reference_mm,truth_posture_mm\n";
-  for (const PostureComparison* p : pairs) {
-    for (const PostureRow& r : p->rows) {
-      out << Cell(p->subject) << ',' << Cell(p->pose_a) << ',' << Cell(p->pose_b) << ','
+  for (const PostureComparison& p : pairs) {
+    for (const PostureRow& r : p.rows) {
+      out << Cell(p.subject) << ',' << Cell(p.pose_a) << ',' << Cell(p.pose_b) << ','
           << Cell(r.name) << ',' << r.kind << ',' << r.iso_class << ','
           << FormatNumber(r.measured_a_mm) << ',' << FormatNumber(r.measured_b_mm) << ','
           << FormatNumber(r.difference_mm) << ',' << FormatNumber(r.limit_mm, 0) << ','
@@ -250,10 +264,13 @@ void WriteAccuracyReport(const AccuracyReport& report, const fs::path& dir) {
   WriteMeasurementsCsv(report, dir / "measurements.csv");
   WriteSummaryCsv(report, dir / "summary.csv");
   if (!report.summary.landmarks.empty()) WriteLandmarkCsvs(report, dir);
-  std::vector<const PostureComparison*> pairs;
-  if (report.posture) pairs.push_back(&*report.posture);
-  for (const PostureComparison& p : report.posture_pairs) pairs.push_back(&p);
-  if (!pairs.empty()) WritePostureCsv(pairs, dir / "posture.csv");
+  // One posture.csv: the posture test's, else the A/T pair's (the run
+  // options never make both).
+  if (!report.posture_pairs.empty()) {
+    WritePostureTestCsv(report.posture_pairs, dir / "posture.csv");
+  } else if (report.posture) {
+    WritePostureCsv(*report.posture, dir / "posture.csv");
+  }
   if (!report.repeatability.empty())
     WriteRepeatabilityCsv(report.repeatability, dir / "repeatability.csv");
   if (!report.not_compared.empty())

@@ -13,8 +13,9 @@
 //                       measured, difference, flags
 //   landmarks.csv       per landmark: n, missing, median / mean / max error
 //   landmark_errors.csv per subject x landmark: error and both points
-//   posture.csv         (with a posture comparison) per pair x measurement:
-//                       both poses' values, difference, limit, verdict, truths
+//   posture.csv         the posture test: per pair x measurement both
+//                       postures' values, difference, limit, verdict, truths;
+//                       else the A/T pair: per measurement both poses
 //   repeatability.csv   (with repeated scans) per measurement: within-subject
 //                       SD and repeatability coefficient
 //   not_compared.csv    (when any) reference rows, subjects and scans left out, with the reason

@@ -392,7 +392,6 @@ PostureComparison RunPosePair(const AccuracyRunOptions& options, const SubjectMe
     posture = ComparePostures(poses[0].measured, poses[1].measured, poses[0].truth, poses[1].truth,
                               options.posture_tolerance_mm);
   }
-  posture.subject = "seed_" + std::to_string(pair[0].seed);
   posture.pose_a = "A-pose";
   posture.pose_b = "T-pose";
   posture.arm_a_deg = options.a_pose_deg;
