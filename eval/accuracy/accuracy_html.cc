@@ -54,6 +54,13 @@ std::string Targets(const AccuracyReport& report) {
                  : "did not run: " + XmlEscape(p.error)) +
             "</td>" + Verdict(p.pass() ? "met" : "missed") + "</tr>\n";
   }
+  if (!report.posture_pairs.empty()) {
+    const PostureSetSummary s = SummarizePostures(report.posture_pairs);
+    html += "<tr><td>posture: every length within " + Num(report.posture_pairs[0].tolerance_mm, 0) +
+            " mm and every girth within its ISO 20685-1 limit of the same body's " +
+            XmlEscape(s.reference) + " value</td><td>" + XmlEscape(s.Headline()) + "</td>" +
+            Verdict(s.pairs > 0 && s.held == s.pairs ? "met" : "missed") + "</tr>\n";
+  }
   return html + "</table>\n";
 }
 
@@ -172,11 +179,102 @@ std::string PostureTable(const PostureComparison& p) {
   return html + "</table>\n";
 }
 
+// "3 / 4" (passed / judged) in a cell coloured by whether all passed.
+std::string Fraction(int passed, int judged) {
+  const std::string css = judged == 0 ? "na" : passed == judged ? "pass" : "fail";
+  return "<td class=\"" + css + "\">" + std::to_string(passed) + " / " + std::to_string(judged) +
+         "</td>";
+}
+
+// Per posture: pairs that hold, lengths and girths, the worst value; then a
+// cell per subject (values within limit / judged, or why it did not run).
+std::string PostureSetTable(const std::vector<PostureComparison>& pairs,
+                            const PostureSetSummary& s) {
+  std::vector<std::string> subjects;
+  for (const PostureComparison& p : pairs) {
+    if (std::find(subjects.begin(), subjects.end(), p.subject) == subjects.end())
+      subjects.push_back(p.subject);
+  }
+  std::string html =
+      "<table><tr><th>posture</th><th>pairs that hold</th><th>lengths within</th><th>girths "
+      "within</th><th>worst (subject)</th><th>difference (mm)</th><th>limit (mm)</th>";
+  for (const std::string& subject : subjects) html += "<th>" + XmlEscape(subject) + "</th>";
+  html += "</tr>\n";
+  for (const PostureSetRow& r : s.postures) {
+    const std::string worst = r.worst_measurement.empty()
+                                  ? ""
+                                  : XmlEscape(r.worst_measurement + " (" + r.worst_subject + ")");
+    html += "<tr>" + Td(XmlEscape(r.posture)) + Fraction(r.held, r.pairs) +
+            Fraction(r.lengths_passed, r.lengths_judged) +
+            Fraction(r.girths_passed, r.girths_judged) + Td(worst) +
+            Td(r.worst_measurement.empty() ? "" : Num(r.worst_difference_mm, 1)) +
+            Td(r.worst_measurement.empty() ? "" : Num(r.worst_limit_mm, 0));
+    for (const std::string& subject : subjects) {
+      const auto p = std::find_if(pairs.begin(), pairs.end(), [&](const PostureComparison& c) {
+        return c.subject == subject && c.pose_b == r.posture;
+      });
+      if (p == pairs.end()) {
+        html += Td("");
+      } else if (!p->error.empty()) {
+        html += "<td class=\"fail\">did not run</td>";
+      } else {
+        html += Fraction(p->passed, p->judged);
+      }
+    }
+    html += "</tr>\n";
+  }
+  return html + "</table>\n";
+}
+
+std::string PostureMeasurementTable(const PostureSetSummary& s) {
+  std::string html =
+      "<table><tr><th>measurement</th><th>kind</th><th>ISO class</th><th>limit (mm)</th>"
+      "<th>pairs within limit</th><th>missing</th><th>largest |difference| (mm)</th><th>in "
+      "pair</th><th>largest |truth difference| (mm)</th><th>pairs whose truth moved beyond the "
+      "limit</th></tr>\n";
+  for (const PostureMeasurementRow& m : s.measurements) {
+    html += "<tr>" + Td(XmlEscape(m.name)) + Td(XmlEscape(m.kind)) + Td(XmlEscape(m.iso_class)) +
+            Td(std::isfinite(m.limit_mm) ? Num(m.limit_mm, 0) : "shown only") +
+            (m.judged > 0 ? Fraction(m.within, m.judged) : Td("")) + Td(std::to_string(m.missing)) +
+            Td(Num(m.max_abs_difference_mm, 1)) +
+            Td(m.max_subject.empty() ? "" : XmlEscape(m.max_subject + " " + m.max_posture)) +
+            Td(Num(m.max_abs_truth_difference_mm, 1)) +
+            Td(m.judged > 0 ? std::to_string(m.truth_beyond) : "") + "</tr>\n";
+  }
+  return html + "</table>\n";
+}
+
+std::string PostureTestSection(const std::vector<PostureComparison>& pairs) {
+  const PostureSetSummary s = SummarizePostures(pairs);
+  std::string html =
+      "<h2>Posture test: each subject against itself in " + XmlEscape(s.reference) + "</h2>\n<p>" +
+      XmlEscape(s.Headline()) +
+      ". Every subject built, scanned and measured in the reference posture and in each listed "
+      "one (same body, same scan seed); difference = posture &minus; reference. Judged: lengths "
+      "along the surface within " +
+      Num(pairs[0].tolerance_mm, 0) +
+      " mm, girths within their ISO 20685-1 class limit (small 4 mm, large 9 mm); a value "
+      "missing in either fails. Heights and the straight breadths are shown, not judged. A pair "
+      "holds when every judged value does. Per pair and measurement, with both truths: <a "
+      "href=\"posture.csv\">posture.csv</a>.</p>\n";
+  html += PostureSetTable(pairs, s);
+  html +=
+      "<h3>Per measurement, over every pair that ran</h3>\n<p>The truth difference is how much "
+      "the body itself changed between the postures (the exact measurements of both meshes).</p>\n";
+  html += PostureMeasurementTable(s);
+  std::vector<std::vector<std::string>> failed;
+  for (const PostureComparison& p : pairs) {
+    if (!p.error.empty()) failed.push_back({p.subject, p.pose_b, p.error});
+  }
+  return html +
+         TextTable("Posture pairs that did not run", {"subject", "posture", "error"}, failed);
+}
+
 std::string TableLinks(const AccuracyReport& report) {
   std::vector<std::string> files = {"summary.csv", "measurements.csv"};
   if (!report.summary.landmarks.empty())
     files.insert(files.end(), {"landmarks.csv", "landmark_errors.csv"});
-  if (report.posture) files.push_back("posture.csv");
+  if (report.posture || !report.posture_pairs.empty()) files.push_back("posture.csv");
   if (!report.repeatability.empty()) files.push_back("repeatability.csv");
   if (!report.not_compared.empty()) files.push_back("not_compared.csv");
   files.push_back("report.json");
@@ -222,6 +320,7 @@ std::string AccuracyHtml(const AccuracyReport& report, const std::vector<std::st
       html += Image("plots/posture.png");
     }
   }
+  if (!report.posture_pairs.empty()) html += PostureTestSection(report.posture_pairs);
   std::vector<std::vector<std::string>> failures, not_compared, mapped;
   for (const SubjectFailure& f : report.failures) failures.push_back({f.subject, f.stage, f.error});
   for (const NotCompared& n : report.not_compared)

@@ -87,6 +87,7 @@ void WriteLandmarkCsvs(const AccuracyReport& report, const fs::path& dir) {
   WriteFileAtomically(dir / "landmark_errors.csv", each.str());
 }
 
+// The A/T pair: one line per measurement.
 void WritePostureCsv(const PostureComparison& posture, const fs::path& file) {
   std::ostringstream out;
   out << "measurement,kind,measured_a_mm,measured_b_mm,difference_mm,truth_a_mm,truth_b_mm,judged,"
@@ -96,6 +97,25 @@ void WritePostureCsv(const PostureComparison& posture, const fs::path& file) {
         << FormatNumber(r.measured_b_mm) << ',' << FormatNumber(r.difference_mm) << ','
         << FormatNumber(r.truth_a_mm) << ',' << FormatNumber(r.truth_b_mm) << ','
         << (r.judged ? 1 : 0) << ',' << (r.judged ? (r.pass ? "pass" : "fail") : "") << '\n';
+  }
+  WriteFileAtomically(file, out.str());
+}
+
+// The posture test: one line per pair that ran x measurement; `pass` is
+// empty for a row shown only.
+void WritePostureTestCsv(const std::vector<PostureComparison>& pairs, const fs::path& file) {
+  std::ostringstream out;
+  out << "subject,reference_posture,posture,measurement,kind,iso_class,reference_mm,posture_mm,"
+         "difference_mm,limit_mm,pass,truth_reference_mm,truth_posture_mm\n";
+  for (const PostureComparison& p : pairs) {
+    for (const PostureRow& r : p.rows) {
+      out << Cell(p.subject) << ',' << Cell(p.pose_a) << ',' << Cell(p.pose_b) << ','
+          << Cell(r.name) << ',' << r.kind << ',' << r.iso_class << ','
+          << FormatNumber(r.measured_a_mm) << ',' << FormatNumber(r.measured_b_mm) << ','
+          << FormatNumber(r.difference_mm) << ',' << FormatNumber(r.limit_mm, 0) << ','
+          << (r.judged ? (r.pass ? "pass" : "fail") : "") << ',' << FormatNumber(r.truth_a_mm)
+          << ',' << FormatNumber(r.truth_b_mm) << '\n';
+    }
   }
   WriteFileAtomically(file, out.str());
 }
@@ -147,6 +167,49 @@ json ExtrasJson(const AccuracyReport& report) {
       {"repeatability", repeatability}, {"not_compared", not_compared}, {"mapped_names", mapped}};
 }
 
+json PostureTestJson(const std::vector<PostureComparison>& pairs) {
+  const PostureSetSummary s = SummarizePostures(pairs);
+  json postures = json::array(), measurements = json::array(), failed = json::array();
+  for (const PostureSetRow& r : s.postures) {
+    postures.push_back({{"posture", r.posture},
+                        {"pairs", r.pairs},
+                        {"held", r.held},
+                        {"did_not_run", r.did_not_run},
+                        {"lengths", {{"judged", r.lengths_judged}, {"passed", r.lengths_passed}}},
+                        {"girths", {{"judged", r.girths_judged}, {"passed", r.girths_passed}}},
+                        {"worst_subject", r.worst_subject},
+                        {"worst_measurement", r.worst_measurement},
+                        {"worst_difference_mm", NumberOrNull(r.worst_difference_mm)},
+                        {"worst_limit_mm", NumberOrNull(r.worst_limit_mm)}});
+  }
+  for (const PostureMeasurementRow& m : s.measurements) {
+    measurements.push_back(
+        {{"measurement", m.name},
+         {"kind", m.kind},
+         {"limit_mm", NumberOrNull(m.limit_mm)},
+         {"pairs", m.pairs},
+         {"judged", m.judged},
+         {"within", m.within},
+         {"missing", m.missing},
+         {"max_abs_difference_mm", NumberOrNull(m.max_abs_difference_mm)},
+         {"max_abs_truth_difference_mm", NumberOrNull(m.max_abs_truth_difference_mm)},
+         {"truth_beyond_limit", m.truth_beyond}});
+  }
+  for (const PostureComparison& p : pairs) {
+    if (!p.error.empty())
+      failed.push_back({{"subject", p.subject}, {"posture", p.pose_b}, {"error", p.error}});
+  }
+  return {{"headline", s.Headline()},
+          {"reference_posture", s.reference},
+          {"pairs", s.pairs},
+          {"pairs_held", s.held},
+          {"values_judged", s.values_judged},
+          {"values_passed", s.values_passed},
+          {"postures", postures},
+          {"measurements", measurements},
+          {"failed_pairs", failed}};
+}
+
 json ReportJson(const AccuracyReport& report) {
   const AccuracySummary& s = report.summary;
   json verdicts = json::object();
@@ -183,6 +246,7 @@ json ReportJson(const AccuracyReport& report) {
                       {"pass", p.pass()},
                       {"error", p.error}};
   }
+  if (!report.posture_pairs.empty()) out["posture_test"] = PostureTestJson(report.posture_pairs);
   return out;
 }
 
@@ -200,7 +264,13 @@ void WriteAccuracyReport(const AccuracyReport& report, const fs::path& dir) {
   WriteMeasurementsCsv(report, dir / "measurements.csv");
   WriteSummaryCsv(report, dir / "summary.csv");
   if (!report.summary.landmarks.empty()) WriteLandmarkCsvs(report, dir);
-  if (report.posture) WritePostureCsv(*report.posture, dir / "posture.csv");
+  // One posture.csv: the posture test's, else the A/T pair's (the run
+  // options never make both).
+  if (!report.posture_pairs.empty()) {
+    WritePostureTestCsv(report.posture_pairs, dir / "posture.csv");
+  } else if (report.posture) {
+    WritePostureCsv(*report.posture, dir / "posture.csv");
+  }
   if (!report.repeatability.empty())
     WriteRepeatabilityCsv(report.repeatability, dir / "repeatability.csv");
   if (!report.not_compared.empty())

@@ -4,7 +4,7 @@
 // on real subjects ("reference": a tape, another scanner). Every file is
 // written atomically (scanners/core/atomic_file.h).
 //   index.html          summary, targets, ISO 20685-1 table, repeatability,
-//                       landmark table, posture table, failures, measurements
+//                       landmark table, posture table(s), failures, measurements
 //                       not compared, names mapped, settings; links the plots
 //   summary.csv         per measurement: class, tolerance, n, bias, SD,
 //                       95 % CI of the mean, limits of agreement, MAE,
@@ -13,7 +13,9 @@
 //                       measured, difference, flags
 //   landmarks.csv       per landmark: n, missing, median / mean / max error
 //   landmark_errors.csv per subject x landmark: error and both points
-//   posture.csv         (with a posture comparison) per measurement: both poses
+//   posture.csv         the posture test: per pair x measurement both
+//                       postures' values, difference, limit, verdict, truths;
+//                       else the A/T pair: per measurement both poses
 //   repeatability.csv   (with repeated scans) per measurement: within-subject
 //                       SD and repeatability coefficient
 //   not_compared.csv    (when any) reference rows, subjects and scans left out, with the reason
@@ -87,10 +89,11 @@ struct AccuracyReport {
   std::vector<SubjectFailure> failures;     // subjects (or scans) that could not be measured
   AccuracySummary summary;
   AccuracyTargets targets;
-  std::optional<PostureComparison> posture;
-  std::vector<RepeatabilityRow> repeatability;  // measurements with repeated scans
-  std::vector<NotCompared> not_compared;        // input left out, with the reason
-  std::vector<MappedName> mapped_names;         // other systems' names that were used
+  std::optional<PostureComparison> posture;      // the parametric A/T pair
+  std::vector<PostureComparison> posture_pairs;  // the posture test: subject x posture
+  std::vector<RepeatabilityRow> repeatability;   // measurements with repeated scans
+  std::vector<NotCompared> not_compared;         // input left out, with the reason
+  std::vector<MappedName> mapped_names;          // other systems' names that were used
 };
 
 void WriteAccuracyReport(const AccuracyReport& report, const std::filesystem::path& dir);

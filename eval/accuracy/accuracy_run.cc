@@ -15,6 +15,7 @@
 #include "eval/accuracy/posture.h"
 #include "measure/catalogue/catalogue.h"
 #include "oracle/body/parametric_body.h"
+#include "oracle/makehuman/makehuman_pose.h"
 #include "oracle/scan_sim/scan_truth.h"
 #include "oracle/synth/synth_body.h"
 #include "oracle/truth/reference_measurements.h"
@@ -39,6 +40,44 @@ std::vector<std::string> SplitList(const std::string& text) {
     start = comma + 1;
   }
   return out;
+}
+
+// InputError naming `option` when `model` cannot build `posture`: an
+// unknown name, or for the parametric body a lean, twist or head turn, or
+// arms or a stance its default body refuses (arms 15-90 deg).
+void CheckPosture(const std::string& model, const std::string& posture, const std::string& what) {
+  try {
+    const MakeHumanPosture p = ParseMakeHumanPosture(posture);
+    if (model != "parametric") return;
+    if (p.lean_deg != 0 || p.twist_deg != 0 || p.head_turn_deg != 0)
+      throw InputError(
+          "the parametric body has no lean, twist or head turn; use --model makehuman");
+    ParametricBodyOptions body;
+    if (p.arm_abduction_deg) body.arm_abduction_deg = *p.arm_abduction_deg;
+    if (p.stance_mm) body.stance_width_mm = *p.stance_mm;
+    body.Check();
+  } catch (const InputError& e) {
+    throw InputError(what + ": " +
+                     (model == "parametric" ? "the parametric body cannot make it: " : "") +
+                     e.what());
+  }
+}
+
+void CheckPostureTest(const AccuracyRunOptions& o) {
+  if (o.posture_test.empty()) return;
+  if (!o.posture.empty())
+    throw InputError("--posture-test builds the subjects in --posture-reference; drop --posture");
+  if (o.pose != "a") throw InputError("--posture-test needs --pose a (not the A/T pair)");
+  CheckPosture(o.model, o.posture_reference, "--posture-reference " + o.posture_reference);
+  std::vector<std::string> seen;
+  for (const std::string& p : SplitList(o.posture_test)) {
+    if (p == o.posture_reference)
+      throw InputError("--posture-test " + p + " is the reference posture itself");
+    if (std::find(seen.begin(), seen.end(), p) != seen.end())
+      throw InputError("--posture-test lists " + p + " twice");
+    seen.push_back(p);
+    CheckPosture(o.model, o.posture_reference + "+" + p, "--posture-test " + p);
+  }
 }
 
 }  // namespace
@@ -69,6 +108,7 @@ void AccuracyRunOptions::Check() const {
     throw InputError("arm angles of the poses must be 15-90 degrees");
   }
   if (!(posture_tolerance_mm > 0)) throw InputError("the posture tolerance must be positive");
+  CheckPostureTest(*this);
   if (jobs < 1 || jobs > 64) throw InputError("--jobs must be 1-64");
   if (!reuse_set.empty() && !fs::is_regular_file(reuse_set / "set.json")) {
     throw InputError(reuse_set, "--reuse-set needs a bespoke synth-set folder (no set.json)");
@@ -250,21 +290,16 @@ void WriteSubjectDocuments(const fs::path& dir, const SubjectOutcome& o) {
   if (!o.measured.is_null()) WriteJsonFile(dir / (o.name + ".measurements.json"), o.measured);
 }
 
-}  // namespace
-
-AccuracyReport RunAccuracy(const AccuracyRunOptions& options, const SubjectMeasurer& measurer,
-                           Progress* progress) {
-  options.Check();
-  AccuracyReport report;
-  report.created_utc = NowUtc();
-  const std::vector<json> reuse = ReusableTruths(options);
+// The subjects' specs, in the run's posture (the reference with the posture test).
+std::vector<SubjectSpec> SubjectSpecs(const AccuracyRunOptions& options,
+                                      const std::vector<json>& reuse) {
   std::vector<SubjectSpec> specs;
+  const std::vector<std::string> postures = SplitList(options.posture);
   for (int i = 0; i < options.subjects; ++i) {
     SubjectSpec spec;
     spec.name = SubjectName(i);
     spec.seed = options.seed * 1000 + static_cast<std::uint64_t>(i) + 1;
     if (options.repeat_body) spec.body_seed = options.seed * 1000 + 1;
-    const std::vector<std::string> postures = SplitList(options.posture);
     if (!postures.empty()) spec.posture = postures[static_cast<std::size_t>(i) % postures.size()];
     if (!options.booths.empty())
       spec.booth = &options.booths[static_cast<std::size_t>(i) % options.booths.size()];
@@ -276,63 +311,142 @@ AccuracyReport RunAccuracy(const AccuracyRunOptions& options, const SubjectMeasu
     if (!reuse[i].is_null()) spec.reuse_truth = &reuse[i];
     specs.push_back(spec);
   }
-  // The posture pair: one parametric body, both poses, run with the subjects.
-  if (options.pose == "both") {
-    for (double arms : {options.a_pose_deg, options.t_pose_deg}) {
-      SubjectSpec spec;
-      spec.name = arms == options.a_pose_deg ? "posture_a" : "posture_t";
-      spec.seed = options.seed * 1000 + 1;
-      if (options.model == "parametric") spec.params = options.params;
-      spec.params.push_back("arm_abduction_deg=" + std::to_string(arms));
+  return specs;
+}
+
+// The posture test's runs, subject-major: each subject's spec (same body
+// and scan seeds, same booth) in the reference posture + each listed one.
+std::vector<SubjectSpec> PostureTestSpecs(const AccuracyRunOptions& options,
+                                          const std::vector<SubjectSpec>& subjects) {
+  std::vector<SubjectSpec> specs;
+  for (const SubjectSpec& subject : subjects) {
+    for (const std::string& p : SplitList(options.posture_test)) {
+      SubjectSpec spec = subject;
+      spec.name = subject.name + "." + p;
+      spec.posture = options.posture_reference + "+" + p;
+      spec.reuse_truth = nullptr;
       specs.push_back(spec);
     }
   }
-  // Subjects use the run's model; the posture pair is always parametric.
-  std::vector<SubjectOutcome> outcomes;
-  {
-    std::vector<SubjectSpec> main(specs.begin(), specs.begin() + options.subjects);
-    outcomes = RunSubjects(options, main, measurer, progress);
+  return specs;
+}
+
+// Each subject's listed postures against its reference run; a run that
+// failed (or a comparison that threw) fails its pair only.
+std::vector<PostureComparison> PostureTestPairs(const AccuracyRunOptions& options,
+                                                const std::vector<SubjectOutcome>& subjects,
+                                                const std::vector<SubjectOutcome>& postured) {
+  const std::vector<std::string> names = SplitList(options.posture_test);
+  std::vector<PostureComparison> pairs;
+  for (std::size_t i = 0; i < subjects.size(); ++i) {
+    const SubjectOutcome& reference = subjects[i];
+    for (std::size_t j = 0; j < names.size(); ++j) {
+      const SubjectOutcome& o = postured[i * names.size() + j];
+      PostureComparison pair;
+      if (!reference.error.empty()) {
+        pair.error = options.posture_reference + " (" + reference.stage + "): " + reference.error;
+      } else if (!o.error.empty()) {
+        pair.error = names[j] + " (" + o.stage + "): " + o.error;
+      } else {
+        try {
+          pair = ComparePostures(reference.measured, o.measured, reference.truth, o.truth,
+                                 options.posture_tolerance_mm, PostureRule::kLengthsAndGirths);
+        } catch (const std::exception& e) {
+          pair.error = std::string("compare: ") + e.what();
+        }
+      }
+      pair.subject = reference.name;
+      pair.pose_a = options.posture_reference;
+      pair.pose_b = names[j];
+      pair.tolerance_mm = options.posture_tolerance_mm;
+      pair.rule = PostureRule::kLengthsAndGirths;
+      pairs.push_back(pair);
+    }
   }
-  for (const SubjectOutcome& o : outcomes) {
+  return pairs;
+}
+
+// The parametric A/T pair (pose "both"): one body, both arm poses.
+PostureComparison RunPosePair(const AccuracyRunOptions& options, const SubjectMeasurer& measurer,
+                              Progress* progress) {
+  std::vector<SubjectSpec> pair;
+  for (double arms : {options.a_pose_deg, options.t_pose_deg}) {
+    SubjectSpec spec;
+    spec.name = arms == options.a_pose_deg ? "posture_a" : "posture_t";
+    spec.seed = options.seed * 1000 + 1;
+    if (options.model == "parametric") spec.params = options.params;
+    spec.params.push_back("arm_abduction_deg=" + std::to_string(arms));
+    pair.push_back(spec);
+  }
+  AccuracyRunOptions parametric = options;
+  parametric.model = "parametric";
+  parametric.reuse_set.clear();
+  const std::vector<SubjectOutcome> poses = RunSubjects(parametric, pair, measurer, progress);
+  PostureComparison posture;
+  for (const SubjectOutcome& o : poses) {
     WriteSubjectDocuments(options.subjects_dir, o);
+    if (!o.error.empty() && posture.error.empty())
+      posture.error = o.name + " (" + o.stage + "): " + o.error;
+  }
+  if (posture.error.empty()) {
+    posture = ComparePostures(poses[0].measured, poses[1].measured, poses[0].truth, poses[1].truth,
+                              options.posture_tolerance_mm);
+  }
+  posture.pose_a = "A-pose";
+  posture.pose_b = "T-pose";
+  posture.arm_a_deg = options.a_pose_deg;
+  posture.arm_b_deg = options.t_pose_deg;
+  return posture;
+}
+
+// The subjects' comparisons with their truth (failures listed) into `report`.
+void CompareSubjects(const std::vector<SubjectOutcome>& outcomes, AccuracyReport* report) {
+  for (const SubjectOutcome& o : outcomes) {
     if (!o.error.empty()) {
-      report.failures.push_back({o.name, o.stage, o.error});
+      report->failures.push_back({o.name, o.stage, o.error});
       continue;
     }
     try {
-      report.subjects.push_back(CompareDocuments(o.measured, o.truth, o.name));
+      report->subjects.push_back(CompareDocuments(o.measured, o.truth, o.name));
     } catch (const std::exception& e) {
-      report.failures.push_back({o.name, "compare", e.what()});
+      report->failures.push_back({o.name, "compare", e.what()});
     }
   }
-  report.summary = SummarizeAccuracy(report.subjects, Catalogue::Builtin());
-  if (options.pose == "both") {
-    AccuracyRunOptions parametric = options;
-    parametric.model = "parametric";
-    parametric.reuse_set.clear();
-    const std::vector<SubjectSpec> pair(specs.begin() + options.subjects, specs.end());
-    const std::vector<SubjectOutcome> poses = RunSubjects(parametric, pair, measurer, progress);
-    PostureComparison posture;
-    for (const SubjectOutcome& o : poses) {
-      WriteSubjectDocuments(options.subjects_dir, o);
-      if (!o.error.empty() && posture.error.empty())
-        posture.error = o.name + " (" + o.stage + "): " + o.error;
-    }
-    if (posture.error.empty()) {
-      posture = ComparePostures(poses[0].measured, poses[1].measured, poses[0].truth,
-                                poses[1].truth, options.posture_tolerance_mm);
-    }
-    posture.pose_a = "A-pose";
-    posture.pose_b = "T-pose";
-    posture.arm_a_deg = options.a_pose_deg;
-    posture.arm_b_deg = options.t_pose_deg;
-    report.posture = posture;
+  report->summary = SummarizeAccuracy(report->subjects, Catalogue::Builtin());
+}
+
+}  // namespace
+
+AccuracyReport RunAccuracy(const AccuracyRunOptions& given, const SubjectMeasurer& measurer,
+                           Progress* progress) {
+  given.Check();
+  AccuracyRunOptions options = given;
+  if (!options.posture_test.empty()) options.posture = options.posture_reference;
+  AccuracyReport report;
+  report.created_utc = NowUtc();
+  const std::vector<json> reuse = ReusableTruths(options);
+  const std::vector<SubjectSpec> specs = SubjectSpecs(options, reuse);
+  // The subjects and their postures run together, so --jobs spans both.
+  std::vector<SubjectSpec> all = specs;
+  const std::vector<SubjectSpec> postured = PostureTestSpecs(options, specs);
+  all.insert(all.end(), postured.begin(), postured.end());
+  const std::vector<SubjectOutcome> outcomes = RunSubjects(options, all, measurer, progress);
+  for (const SubjectOutcome& o : outcomes) WriteSubjectDocuments(options.subjects_dir, o);
+  const std::vector<SubjectOutcome> subjects(outcomes.begin(), outcomes.begin() + specs.size());
+  CompareSubjects(subjects, &report);
+  if (!postured.empty()) {
+    report.posture_pairs = PostureTestPairs(
+        options, subjects,
+        std::vector<SubjectOutcome>(outcomes.begin() + specs.size(), outcomes.end()));
   }
+  if (options.pose == "both") report.posture = RunPosePair(options, measurer, progress);
   json times = json::object();
   for (const SubjectOutcome& o : outcomes) times[o.name] = o.time_s;
   report.settings["subject_time_s"] = times;
   report.title = "Bespoke accuracy report: " + std::to_string(options.subjects) + " " +
                  options.model + " subjects";
+  if (!postured.empty())
+    report.title += " x " + std::to_string(postured.size() / specs.size()) + " postures";
   return report;
 }
 

@@ -16,7 +16,15 @@
 //
 // Posture (pose "both"): the parametric body of seed * 1000 + 1 built with
 // the arms at a_pose_deg and at t_pose_deg, both scanned and measured, and
-// their measurements compared (eval/accuracy/posture.h).
+// their measurements compared (eval/accuracy/posture.h, rule kLengths).
+//
+// The posture test (posture_test set): the subjects are built in
+// posture_reference, and every subject is also built (same body seed),
+// scanned (same scan seed and booth) and measured in each listed posture;
+// each posture's measurements are compared with the same subject's
+// reference ones (rule kLengthsAndGirths). A listed posture changes only
+// what it names: "lean-5" is the reference's arms and stance, leaning. A
+// run that fails fails its pair only.
 //
 // Failure: InputError from Check() for bad options, or when the reuse
 // folder's set does not match; everything else is caught per subject.
@@ -58,7 +66,12 @@ struct AccuracyRunOptions {
   double a_pose_deg = 30;  // default 30 deg: parametric arm abduction of the A-pose
   double t_pose_deg = 90;  // default 90 deg: of the T-pose
   double posture_tolerance_mm = 5;  // default 5 mm: lengths of both poses must agree within it
-  int jobs = 1;                     // subjects run at once (threads), 1-64
+  // Postures (synth_body names, comma-separated) compared with the reference
+  // posture, each on every subject; "" = no posture test. Needs pose "a" and
+  // no `posture`; every name must be one the model can build.
+  std::string posture_test;
+  std::string posture_reference = "arms-30";  // default arms-30: the subjects' posture in the test
+  int jobs = 1;                               // subjects run at once (threads), 1-64
   std::filesystem::path reuse_set;  // a synth-set folder whose truth.json files are reused; "" none
   std::filesystem::path subjects_dir;  // per-subject documents written here; "" = none
   bool truth_landmarks = false;  // give the measurer the true datum points (see SubjectMeasurer)
@@ -76,9 +89,11 @@ struct AccuracyRunOptions {
 using SubjectMeasurer = std::function<nlohmann::json(
     const CleanResult& cleaned, const std::map<std::string, Eigen::Vector3d>* given)>;
 
-// Runs the subjects (and the posture pair with pose "both") and returns the
-// report, summary computed, ready for WriteAccuracyReport. `progress` sees
-// one stage, "subjects", counting finished subjects.
+// Runs the subjects (and the posture pair with pose "both", the subjects'
+// postures with posture_test) and returns the report, summary computed,
+// ready for WriteAccuracyReport. `progress` sees a stage "subjects" counting
+// finished runs (subjects x (1 + listed postures)), and one more for the
+// pose pair.
 AccuracyReport RunAccuracy(const AccuracyRunOptions& options, const SubjectMeasurer& measurer,
                            Progress* progress = nullptr);
 

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -272,6 +273,111 @@ TEST(ComparePostures, JudgesLengthsOnly) {
   EXPECT_EQ(q.judged, 3);
 }
 
+// A reference and a posture document: waist (large girth) and neck (small
+// girth) both 8 mm off, a length 4 mm off, a height and a breadth far off,
+// the hip girth missing in the posture.
+struct PosturePair {
+  json reference = {
+      {"measurements",
+       {Measurement("waist_girth", "girth", 800), Measurement("neck_girth", "girth", 380),
+        Measurement("back_length", "length", 400), Measurement("stature", "height", 1700),
+        Measurement("shoulder_width", "length", 420), Measurement("hip_girth", "girth", 1000)}}};
+  json posture = {
+      {"measurements",
+       {Measurement("waist_girth", "girth", 808), Measurement("neck_girth", "girth", 388),
+        Measurement("back_length", "length", 404), Measurement("stature", "height", 1650),
+        Measurement("shoulder_width", "length", 380)}}};
+};
+
+TEST(ComparePostures, JudgesGirthsByTheirIsoClass) {
+  const PosturePair d;
+  const PostureComparison p =
+      ComparePostures(d.reference, d.posture, nullptr, nullptr, 5, PostureRule::kLengthsAndGirths);
+  ASSERT_EQ(p.rows.size(), 6u);
+  const auto row = [&](const std::string& name) {
+    for (const PostureRow& r : p.rows) {
+      if (r.name == name) return r;
+    }
+    ADD_FAILURE() << name;
+    return PostureRow();
+  };
+  EXPECT_TRUE(row("waist_girth").pass);  // 8 mm, large girth: 9 mm allowed
+  EXPECT_DOUBLE_EQ(row("waist_girth").limit_mm, 9);
+  EXPECT_EQ(row("waist_girth").iso_class, "large_girth");
+  EXPECT_TRUE(row("neck_girth").judged);
+  EXPECT_FALSE(row("neck_girth").pass);  // 8 mm, small girth: 4 mm allowed
+  EXPECT_DOUBLE_EQ(row("neck_girth").limit_mm, 4);
+  EXPECT_TRUE(row("back_length").pass);
+  EXPECT_DOUBLE_EQ(row("back_length").limit_mm, 5);
+  EXPECT_FALSE(row("stature").judged);  // heights and breadths: shown only
+  EXPECT_FALSE(row("shoulder_width").judged);
+  EXPECT_NEAR(row("shoulder_width").difference_mm, -40, 1e-9);
+  EXPECT_TRUE(row("hip_girth").judged);  // missing in the posture: fails
+  EXPECT_FALSE(row("hip_girth").pass);
+  EXPECT_EQ(p.judged, 4);
+  EXPECT_EQ(p.passed, 2);
+  EXPECT_EQ(p.lengths_judged, 1);
+  EXPECT_EQ(p.lengths_passed, 1);
+  EXPECT_EQ(p.girths_judged, 3);
+  EXPECT_EQ(p.girths_passed, 1);
+  ASSERT_GE(p.worst, 0);
+  EXPECT_EQ(p.rows[p.worst].name, "hip_girth");  // a missing value is the worst
+  EXPECT_NEAR(p.max_abs_difference_mm, 8, 1e-9);
+  EXPECT_FALSE(p.pass());
+  // The A/T rule on the same documents: every length (the breadth too), no girth.
+  const PostureComparison q = ComparePostures(d.reference, d.posture, nullptr, nullptr, 5);
+  EXPECT_EQ(q.judged, 2);
+  EXPECT_EQ(q.passed, 1);
+  EXPECT_EQ(q.girths_judged, 0);
+  EXPECT_EQ(q.rows[q.worst].name, "shoulder_width");
+}
+
+TEST(SummarizePostures, CountsPairsValuesAndTheWorst) {
+  const PosturePair d;
+  const auto pair = [&](const std::string& subject, const std::string& posture, const json& b) {
+    PostureComparison p =
+        ComparePostures(d.reference, b, d.reference, b, 5, PostureRule::kLengthsAndGirths);
+    p.subject = subject;
+    p.pose_a = "arms-30";
+    p.pose_b = posture;
+    return p;
+  };
+  PostureComparison failed;
+  failed.subject = "s2";
+  failed.pose_a = "arms-30";
+  failed.pose_b = "lean-5";
+  failed.error = "lean-5 (scan): no points";
+  const std::vector<PostureComparison> pairs = {pair("s1", "lean-5", d.reference),
+                                                pair("s1", "twist-5", d.posture), failed,
+                                                pair("s2", "twist-5", d.reference)};
+  const PostureSetSummary s = SummarizePostures(pairs);
+  EXPECT_EQ(s.reference, "arms-30");
+  EXPECT_EQ(s.pairs, 4);
+  EXPECT_EQ(s.held, 2);            // the reference against itself; the failed run does not hold
+  EXPECT_EQ(s.values_judged, 12);  // 3 girths and 1 length in each of the 3 pairs that ran
+  EXPECT_EQ(s.values_passed, 10);
+  EXPECT_EQ(s.Headline(),
+            "posture: 2 of 4 subject x posture pairs hold; 10 of 12 values within limit");
+  ASSERT_EQ(s.postures.size(), 2u);
+  EXPECT_EQ(s.postures[0].posture, "lean-5");
+  EXPECT_EQ(s.postures[0].pairs, 2);
+  EXPECT_EQ(s.postures[0].held, 1);
+  EXPECT_EQ(s.postures[0].did_not_run, 1);
+  EXPECT_EQ(s.postures[1].worst_subject, "s1");
+  EXPECT_EQ(s.postures[1].worst_measurement, "hip_girth");
+  EXPECT_TRUE(std::isnan(s.postures[1].worst_difference_mm));
+  const auto m =
+      std::find_if(s.measurements.begin(), s.measurements.end(),
+                   [](const PostureMeasurementRow& r) { return r.name == "neck_girth"; });
+  ASSERT_NE(m, s.measurements.end());
+  EXPECT_EQ(m->judged, 3);
+  EXPECT_EQ(m->within, 2);
+  EXPECT_NEAR(m->max_abs_difference_mm, 8, 1e-9);
+  EXPECT_EQ(m->max_posture, "twist-5");
+  EXPECT_NEAR(m->max_abs_truth_difference_mm, 8, 1e-9);  // the truths given are the documents
+  EXPECT_EQ(m->truth_beyond, 1);                         // 8 mm > 4 mm in s1 twist-5
+}
+
 std::string ReadText(const fs::path& file) {
   std::ifstream in(file);
   std::stringstream s;
@@ -314,6 +420,36 @@ TEST(WriteAccuracyReport, WritesEveryFile) {
   const json r = ReadJsonFile(dir / "report.json");
   EXPECT_EQ(r["subjects_failed"], 1);
   EXPECT_EQ(r["verdicts"]["stature"], "pass");
+  fs::remove_all(dir);
+}
+
+TEST(WriteAccuracyReport, WritesThePostureTest) {
+  AccuracyReport report;
+  const PosturePair d;
+  report.posture_pairs.push_back(
+      ComparePostures(d.reference, d.posture, nullptr, nullptr, 5, PostureRule::kLengthsAndGirths));
+  report.posture_pairs[0].subject = "subject_000";
+  report.posture_pairs[0].pose_a = "arms-30";
+  report.posture_pairs[0].pose_b = "lean-5";
+  const fs::path dir =
+      fs::temp_directory_path() / ("accuracy_posture_test_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  WriteAccuracyReport(report, dir);
+  const std::string csv = ReadText(dir / "posture.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "subject,reference_posture,posture,measurement,kind,iso_class,reference_mm,posture_mm,"
+            "difference_mm,limit_mm,pass,truth_reference_mm,truth_posture_mm");
+  EXPECT_NE(csv.find("subject_000,arms-30,lean-5,neck_girth,girth,small_girth,380.00,388.00,8.00,4,"
+                     "fail,,\n"),
+            std::string::npos)
+      << csv;
+  EXPECT_NE(csv.find("subject_000,arms-30,lean-5,stature,height,height,1700.00,1650.00,-50.00,,,"),
+            std::string::npos)
+      << csv;
+  const json r = ReadJsonFile(dir / "report.json");
+  EXPECT_EQ(r["posture_test"]["headline"],
+            "posture: 0 of 1 subject x posture pairs hold; 2 of 4 values within limit");
+  EXPECT_NE(ReadText(dir / "index.html").find("Posture test"), std::string::npos);
   fs::remove_all(dir);
 }
 

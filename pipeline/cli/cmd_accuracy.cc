@@ -5,12 +5,15 @@
 // Against the oracle: `bespoke accuracy --subjects N [--model
 // parametric|makehuman] [--seed S] [--population default|full]
 // [--posture P[,P...]] [--booth B[,B...]] [--repeat-body] [--noise-mm 1]
-// [--pose a|t|both] [--jobs N] [--param k=v ...] [--reuse-set SYNTH_SET_DIR]
+// [--pose a|t|both] [--posture-test P[,P...] [--posture-reference arms-30]]
+// [--jobs N] [--param k=v ...] [--reuse-set SYNTH_SET_DIR]
 // [--truth-landmarks] [--keep-subjects] -o REPORT_DIR` generates N subjects, scans them
 // virtually, cleans, finds the landmarks, measures them in-process and
 // compares with the exact truth (eval/accuracy/accuracy_run.h). --pose both
-// (the default for parametric subjects) adds the posture test: the parametric
-// body of seed S * 1000 + 1 in an A-pose and a T-pose. --truth-landmarks
+// (the default for parametric subjects without --posture-test) adds the A/T
+// pair: the parametric body of seed S * 1000 + 1 in an A-pose and a T-pose.
+// --posture-test builds the subjects in the reference posture and again in
+// each listed one, and compares every subject with itself. --truth-landmarks
 // measures at the true datum points (mapped into the cleaned frame),
 // separating measuring errors from landmark errors.
 //
@@ -50,7 +53,7 @@ namespace {
 
 struct AccuracyCommandOptions {
   AccuracyRunOptions run;
-  std::string pose;    // "" = both for parametric, a for makehuman
+  std::string pose;    // "" = both for parametric (a with --posture-test), a for makehuman
   ScanSimCli scanner;  // the virtual scanner's options used here (pipeline/cli/scan_sim_cli.h)
   std::string booths = "default";  // --booth NAME[,NAME...]
   bool keep_subjects = false;
@@ -100,6 +103,14 @@ void PrintHeadline(const AccuracyReport& report, const std::filesystem::path& di
   if (!report.not_compared.empty()) {
     std::printf("not compared: %zu (not_compared.csv says why)\n", report.not_compared.size());
   }
+  if (!report.posture_pairs.empty()) {
+    std::printf("%s\n", SummarizePostures(report.posture_pairs).Headline().c_str());
+    for (const PostureComparison& p : report.posture_pairs) {
+      if (!p.error.empty())
+        std::printf("posture pair failed: %s %s: %s\n", p.subject.c_str(), p.pose_b.c_str(),
+                    p.error.c_str());
+    }
+  }
   if (report.posture) {
     const PostureComparison& p = *report.posture;
     if (p.error.empty()) {
@@ -128,7 +139,8 @@ int Finish(const AccuracyReport& report, const std::filesystem::path& output) {
 
 int RunOracle(const AccuracyCommandOptions& o, const GlobalOptions& global) {
   AccuracyRunOptions run = o.run;
-  run.pose = !o.pose.empty() ? o.pose : run.model == "parametric" ? "both" : "a";
+  const bool pair = run.model == "parametric" && run.posture_test.empty();
+  run.pose = !o.pose.empty() ? o.pose : pair ? "both" : "a";
   if (o.jobs >= 0) run.jobs = o.jobs;
   std::vector<std::string> names;
   for (std::size_t start = 0; start <= o.booths.size();) {
@@ -157,6 +169,8 @@ int RunOracle(const AccuracyCommandOptions& o, const GlobalOptions& global) {
                              {"model", run.model},
                              {"population", run.population},
                              {"posture", run.posture},
+                             {"posture_test", run.posture_test},
+                             {"posture_reference", run.posture_reference},
                              {"seed", run.seed},
                              {"params", run.params},
                              {"pose", run.pose},
@@ -210,6 +224,13 @@ void AddOracleOptions(CLI::App& app, AccuracyCommandOptions* o, CLI::Option* sca
                         "Posture: rest, arms-5|15|30|45|90, feet-together, feet-40, lean-5, "
                         "twist-5, head-turn, joined with +; a comma list is cycled through by "
                         "the subjects (default: the model's own)"));
+  oracle(app.add_option("--posture-test", r.posture_test,
+                        "Posture test: every subject also built, scanned and measured in each of "
+                        "these postures (comma list, names as --posture) and compared with itself "
+                        "in --posture-reference: lengths within 5 mm, girths within their ISO "
+                        "20685-1 limit"));
+  oracle(app.add_option("--posture-reference", r.posture_reference,
+                        "Posture test: the subjects' reference posture (default arms-30)"));
   oracle(app.add_flag("--repeat-body", r.repeat_body,
                       "Every subject is the same body (seed S * 1000 + 1), scanned with its own "
                       "seed (repeatability)"));

@@ -146,6 +146,67 @@ TEST(AccuracyCli, BadOptionsExitOneAndWriteNothing) {
   EXPECT_EQ(Accuracy(dir, "--subjects 2").exit_code, 1);  // no -o
 }
 
+TEST(AccuracyCli, PostureTestNamesWhatItCannotRun) {
+  TempDir dir;
+  const std::string out = " -o " + testing::Quote(dir / "report");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--subjects 1 --posture-test arms-7", "unknown posture 'arms-7'"},
+      {"--subjects 1 --posture-test lean-5", "--posture-test lean-5: the parametric body cannot"},
+      {"--subjects 1 --posture-test arms-5", "--posture-test arms-5: the parametric body cannot"},
+      {"--subjects 1 --posture-test feet-together", "feet-together: the parametric body cannot"},
+      {"--subjects 1 --posture-test arms-30", "is the reference posture itself"},
+      {"--subjects 1 --posture-test arms-45,arms-45", "lists arms-45 twice"},
+      {"--subjects 1 --posture-test arms-45 --posture arms-30", "drop --posture"},
+      {"--subjects 1 --posture-test arms-45 --pose both", "needs --pose a"},
+      {"--subjects 1 --posture-test arms-45 --posture-reference sit", "unknown posture 'sit'"}};
+  for (const auto& [args, message] : cases) {
+    const testing::CommandResult r = Accuracy(dir, args + out);
+    EXPECT_EQ(r.exit_code, 1) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << "\n" << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "report")) << args;
+  }
+}
+
+TEST(AccuracyCli, PostureTestPairsASubjectWithItself) {
+  TempDir dir;
+  const testing::CommandResult r =
+      Accuracy(dir, std::string("--subjects 1 --seed 3 --posture-test arms-45") + kSmallBodies +
+                        " -o " + testing::Quote(dir / "report"));
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  EXPECT_NE(r.out.find("posture: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" of 1 subject x posture pairs hold; "), std::string::npos) << r.out;
+  const nlohmann::json summary = ReadJsonFile(dir / "report" / "report.json");
+  EXPECT_FALSE(summary.contains("posture")) << "no A/T pair with --posture-test";
+  ASSERT_TRUE(summary.contains("posture_test"));
+  const nlohmann::json& test = summary["posture_test"];
+  EXPECT_EQ(test["reference_posture"], "arms-30");
+  EXPECT_EQ(test["pairs"], 1);
+  ASSERT_EQ(test["postures"].size(), 1u);
+  EXPECT_EQ(test["postures"][0]["posture"], "arms-45");
+  // Every judged value is a line of posture.csv with a verdict; the judged
+  // lengths and girths add up to the values judged.
+  const auto rows = ReadCsv(dir / "report" / "posture.csv");
+  ASSERT_GT(rows.size(), 40u);
+  const auto c = Columns(rows[0]);
+  int judged = 0, passed = 0;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i][c.at("subject")], "subject_000");
+    EXPECT_EQ(rows[i][c.at("posture")], "arms-45");
+    const std::string& verdict = rows[i][c.at("pass")];
+    judged += !verdict.empty();
+    passed += verdict == "pass";
+    const std::string& kind = rows[i][c.at("kind")];
+    if (kind == "height" || kind == "girth") {
+      EXPECT_EQ(verdict.empty(), kind == "height") << rows[i][c.at("measurement")];
+    }
+  }
+  EXPECT_EQ(test["values_judged"], judged);
+  EXPECT_EQ(test["values_passed"], passed);
+  const nlohmann::json& p = test["postures"][0];
+  EXPECT_EQ(p["lengths"]["judged"].get<int>() + p["girths"]["judged"].get<int>(), judged);
+  EXPECT_EQ(ReadJsonFile(dir / "report" / "settings.json")["posture_test"], "arms-45");
+}
+
 // Column `name` of every data row, keyed by the rows' first cell(s).
 std::map<std::string, std::string> Column(const std::vector<std::vector<std::string>>& rows,
                                           const std::string& name, std::size_t key_cells = 1) {
