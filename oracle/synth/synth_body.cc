@@ -76,7 +76,9 @@ Body SynthBodyGenerator::Generate(const SynthBodyOptions& options) {
     if (!options.posture.empty()) ApplyParametricPosture(options.posture, &p);
     p.Check();
     Body body = GenerateParametricBody(p);
-    PlaceDefinedLandmarks(DefinedLandmarkOptions(), {}, &body);
+    DefinedLandmarkOptions defined;
+    defined.calves = false;  // the construction's calf ring is the leg's bulge
+    PlaceDefinedLandmarks(defined, {}, &body);
     return body;
   }
   const std::filesystem::path dir =
