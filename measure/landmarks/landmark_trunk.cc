@@ -289,12 +289,25 @@ void Bust(Context* c, double* bust_z) {
                                       return level > 0 ? std::abs(z - level) > 15 : z > hi_z;
                                     }),
                      candidates.end());
-    const int best = c->SmoothExtreme(candidates, dir, 10, 4);
+    int best = c->SmoothExtreme(candidates, dir, 10, 4);
     if (best < 0) {
       c->Missing(name, "no chest points below the armpit");
       continue;
     }
-    c->Put(name, c->P(best), 0.8, level > 0 ? "breast_front_max" : "front_max_below_armpit");
+    // No breast, and the front still grows at the window's foot: a belly
+    // below a flat chest. The nipple then lies 3 % of stature under the
+    // armpit (adult anthropometry: bust height ~72 %, axilla ~75 %).
+    std::string method = level > 0 ? "breast_front_max" : "front_max_below_armpit";
+    const double lo_z = c->slices[static_cast<size_t>(lo)].z;
+    if (level < 0 && c->points(best, 2) < lo_z + 4 * c->step) {
+      const double z0 = arm.armpit_z - 0.03 * h;
+      std::vector<int> chest;
+      for (int r : candidates)
+        if (std::abs(c->points(r, 2) - z0) <= 15) chest.push_back(r);
+      const int flat = c->SmoothExtreme(chest, dir, 10, 4);
+      if (flat >= 0) best = flat, method = "proportion_above_belly";
+    }
+    c->Put(name, c->P(best), method == "breast_front_max" ? 0.8 : 0.5, method);
     if (sign > 0) *bust_z = c->points(best, 2);
   }
 }
