@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "measure/catalogue/catalogue.h"
@@ -333,6 +334,33 @@ TEST(MakeHumanLandmarks, UpperArmsRestingOnAHeavyTrunkAreTheArms) {
     }
     ASSERT_GT(lateral, 50) << name;
     EXPECT_LE(trunk, lateral / 50) << name << ": " << trunk << " of " << lateral << " are trunk";
+  }
+}
+
+// The bust point on two hard cases of the full population (arms 30 deg): a
+// heavy woman whose breast hangs just under an armpit found 70 mm low (seed
+// 1006; the bust was found on the belly, 180 mm low) and a man with a belly
+// under a flat chest (seed 1028; the belly's front, 145 mm low).
+TEST(MakeHumanLandmarks, BustPointOverABellyAndUnderALowArmpit) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(shared / "data/bodies/makehuman");
+  for (const auto& [seed, method, tolerance_mm] :
+       {std::tuple{1006, "breast_front_max", 15.0},
+        std::tuple{1028, "proportion_above_belly", 40.0}}) {
+    MakeHumanBodyOptions options;
+    options.seed = seed;
+    options.population = "full";
+    options.posture = ParseMakeHumanPosture("arms-30");
+    testing::ScannedBodyOptions scan_options;
+    scan_options.scan_seed = seed;
+    const testing::ScannedBody scan =
+        testing::ScanAndClean(scan_options, GenerateMakeHumanBody(options, &model));
+    const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
+    ASSERT_TRUE(set.Has("bust_right")) << seed;
+    EXPECT_EQ(set.At("bust_right").method, method) << seed;
+    EXPECT_LE(std::abs(set.At("bust_right").position_mm.z() - scan.truth.at("bust_right").z()),
+              tolerance_mm)
+        << seed;
   }
 }
 
