@@ -120,13 +120,11 @@ bool IsArm(ScanPart part) { return part == ScanPart::kArmRight || part == ScanPa
 // The points a girth leaves out, from the body structure's parts: a trunk
 // girth (horizontal, round the body: side centre or both) keeps the trunk's
 // points only, so arms and hands resting on it never join its section
-// however close they lie; with several datum points round the trunk
-// (`one_part`, as the reference takes the loop enclosing them) all that is
-// left is its section, however the scan's holes cut it; with one (under-bust,
-// middle hip) the piece at the datum point, as the reference takes the loop
-// nearest it. Another girth with no datum point on an arm (a leg's) leaves
-// out the arms. Empty (nothing left out) without a structure or for an arm's
-// girth.
+// however close they lie, and all that is left is its section (`one_part`),
+// however the scan's holes cut it: the piece at a single datum point (under-
+// bust, middle hip) can be a sliver between two holes of a sparse scan
+// (a 9 mm middle hip girth at 60k points). Another girth with no datum point on an arm (a leg's)
+// leaves out the arms. Empty (nothing left out) without a structure or for an arm's girth.
 std::vector<bool> LeaveOut(const MeasurementDef& m, const PointCloud& cloud,
                            const std::vector<ScanPart>& parts, const Eigen::MatrixX3d& anchors,
                            bool* one_part) {
@@ -141,7 +139,7 @@ std::vector<bool> LeaveOut(const MeasurementDef& m, const PointCloud& cloud,
   std::vector<bool> out(parts.size());
   for (std::size_t i = 0; i < parts.size(); ++i)
     out[i] = trunk ? parts[i] != ScanPart::kTrunk : IsArm(parts[i]);
-  *one_part = trunk && anchors.rows() > 1;
+  *one_part = trunk;
   return out;
 }
 
