@@ -67,6 +67,14 @@ struct MeasurementDef {
   std::string valentina, freesewing;                    // empty where none exists
 };
 
+// Whether `m` is a girth round the trunk: a horizontal section measured
+// across the body (side "centre" or "both": bust, chest, under-bust, waist,
+// middle hip, hip). The neck's plane runs through its datum points.
+inline bool IsTrunkGirth(const MeasurementDef& m) {
+  return m.kind == MeasurementKind::kGirth && m.plane == GirthPlane::kHorizontal &&
+         (m.side == "centre" || m.side == "both");
+}
+
 class Catalogue {
  public:
   // The built-in catalogue (parsed once, on first use; thread-safe).

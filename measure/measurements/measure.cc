@@ -130,7 +130,7 @@ std::vector<bool> LeaveOut(const MeasurementDef& m, const PointCloud& cloud,
                            bool* one_part) {
   *one_part = false;
   if (parts.size() != static_cast<std::size_t>(cloud.size()) || cloud.size() == 0) return {};
-  const bool trunk = m.plane == GirthPlane::kHorizontal && (m.side == "centre" || m.side == "both");
+  const bool trunk = IsTrunkGirth(m);
   for (Eigen::Index a = 0; a < anchors.rows() && !trunk; ++a) {
     Eigen::Index nearest = 0;
     (cloud.points.rowwise() - anchors.row(a)).rowwise().squaredNorm().minCoeff(&nearest);

@@ -85,7 +85,7 @@ ReferenceMeasurement Girth(const ReferenceOptions& options, const MeasurementDef
   }
   // Round the trunk the tape also passes over the loops the plane cuts
   // apart in front of or behind it (a heavy breast hanging over the chest).
-  const bool trunk = m.plane == GirthPlane::kHorizontal && (m.side == "centre" || m.side == "both");
+  const bool trunk = IsTrunkGirth(m);
   const std::vector<int> parts = trunk ? TrunkLoopIndices(loops, chosen) : std::vector<int>{chosen};
   const SectionLoop loop = MergedLoops(loops, parts);
   out.value_mm = LoopHullPerimeter(loop, normal);
