@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "measure/landmarks/landmark_context.h"
+#include "measure/landmarks/profile_extreme.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke::landmarks {
@@ -131,10 +132,22 @@ void FindArm(Context* c, int sign) {
   if (arm.touching) flags.push_back("arm_touching_torso"), confidence = 0.3;
   // Wrist: the narrowest section between 260 mm and 90 mm from the arm's end
   // (the hand is wider and flat).
-  double wrist_t = -1, best = kInf;
-  for (double t = f.length - 260; t <= f.length - 90; t += 5) {
-    const double r = SectionRadius(*c, f, t, 4);
-    if (r < best) best = r, wrist_t = t;
+  // The radius profile's parabola around its smallest sample gives a
+  // station off the 5 mm grid (profile_extreme.h).
+  double wrist_t = -1;
+  std::vector<double> at, radius;
+  size_t best = 0;
+  for (double t = f.length - 275; t <= f.length - 75; t += 5) {
+    at.push_back(t);
+    radius.push_back(SectionRadius(*c, f, t, 4));
+    const bool inside = t >= f.length - 260 && t <= f.length - 90;
+    if (inside && std::isfinite(radius.back()) && (wrist_t < 0 || radius.back() < radius[best]))
+      best = at.size() - 1, wrist_t = t;
+  }
+  if (wrist_t >= 0) {
+    ProfileExtremeOptions narrowest;
+    narrowest.half_window = 2;
+    wrist_t = ProfileExtreme(narrowest, at, radius, best);
   }
   if (wrist_t < 0) {
     for (const char* n : {"upper_arm", "elbow", "wrist"})

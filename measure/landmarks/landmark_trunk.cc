@@ -1,11 +1,13 @@
 // Crown, crotch and the trunk levels: bust, under-bust, waist, middle hip,
 // hip (docs/landmarks.md has the definitions and why).
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 
 #include "measure/landmarks/landmark_context.h"
+#include "measure/landmarks/profile_extreme.h"
 #include "measure/tape/convex_hull_2d.h"
 #include "scanners/core/errors.h"
 
@@ -380,15 +382,24 @@ void FindTrunkLevels(Context* c) {
   const double span = under_z - hip_z;
   if (under_z > 0 && span > 0.05 * h) {
     const double waist_lo = hip_z + 0.3 * span, waist_top = hip_z + 0.85 * span;
-    double best = kInf;
-    for (double z = waist_lo; z <= waist_top; z += c->step) {
+    // The girth profile on the band's slices (and three beyond each end,
+    // for the fit): the narrowest slice in the band, then the vertex of the
+    // profile's parabola around it (profile_extreme.h).
+    std::vector<double> at, girth;
+    size_t best = 0;
+    for (double z = waist_lo - 3 * c->step; z <= waist_top + 3 * c->step; z += c->step) {
       const std::vector<int> rows = c->TrunkRows(c->At(z));
-      if (rows.size() < 20) continue;
-      const double girth = HullPerimeter(c->points, rows);
-      if (girth < best) best = girth, waist_z = z;
+      at.push_back(c->At(z).z);
+      girth.push_back(rows.size() < 20 ? kNaN : HullPerimeter(c->points, rows));
+      const bool in_band = z >= waist_lo && z <= waist_top;
+      if (in_band && std::isfinite(girth.back()) && (waist_z < 0 || girth.back() < girth[best]))
+        best = at.size() - 1, waist_z = at.back();
     }
-    if (waist_z > waist_top - 2 * c->step)
+    if (waist_z > waist_top - 2 * c->step) {
       waist_confidence = 0.5, waist_method = "band_top_no_narrowing";
+    } else if (waist_z > 0) {
+      waist_z = ProfileExtreme({}, at, girth, best);
+    }
   }
   if (waist_z < 0) {
     // No under-bust (or one found below the hip's reach): the waist from

@@ -1,0 +1,40 @@
+#include "measure/landmarks/profile_extreme.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+#include "scanners/core/errors.h"
+
+namespace bespoke::landmarks {
+
+double ProfileExtreme(const ProfileExtremeOptions& options, const std::vector<double>& at,
+                      const std::vector<double>& value, size_t best) {
+  if (at.size() != value.size() || best >= at.size())
+    throw InternalError("ProfileExtreme: sample index out of range or sizes differ");
+  const size_t lo = best >= static_cast<size_t>(options.half_window)
+                        ? best - static_cast<size_t>(options.half_window)
+                        : 0;
+  const size_t hi = std::min(at.size() - 1, best + static_cast<size_t>(options.half_window));
+  // Normal equations of the fit in u = at - at[best] (well conditioned).
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d atb = Eigen::Vector3d::Zero();
+  int n = 0;
+  const double sign = options.minimum ? 1.0 : -1.0;
+  for (size_t k = lo; k <= hi; ++k) {
+    if (!std::isfinite(value[k])) continue;
+    const double u = at[k] - at[best];
+    const Eigen::Vector3d row(u * u, u, 1.0);
+    ata += row * row.transpose();
+    atb += row * (sign * value[k]);
+    ++n;
+  }
+  if (n < std::max(3, options.min_samples)) return at[best];
+  const Eigen::Vector3d coef = ata.ldlt().solve(atb);
+  if (!coef.allFinite() || coef(0) <= 0) return at[best];
+  const double left = best > 0 ? at[best - 1] : at[best];
+  const double right = best + 1 < at.size() ? at[best + 1] : at[best];
+  return std::clamp(at[best] - coef(1) / (2 * coef(0)), left, right);
+}
+
+}  // namespace bespoke::landmarks
