@@ -68,6 +68,14 @@ struct Context {
   // cloud neighbours within `radius_mm`. -1 when `candidates` is empty.
   int SmoothExtreme(const std::vector<int>& candidates, const Eigen::Vector3d& direction,
                     double radius_mm = 12, double band_mm = 6) const;
+  // The row nearest the centre of the cap the candidates form at their
+  // extreme along `direction` (unit): the mean position of those within
+  // `depth_mm` of the extreme, which the fifth highest value sets so that
+  // no single noisy point does. On a rounded corner the extreme value is
+  // flat along the curve and the single most extreme point wanders; the
+  // cap's centre does not. -1 when `candidates` is empty.
+  int CapCentre(const std::vector<int>& candidates, const Eigen::Vector3d& direction,
+                double depth_mm = 5) const;
   // Rows of the trunk in slice `s`: those the structure labels trunk; without
   // a structure, the pieces reaching the body's middle (|x| < core_mm),
   // which arms and hands away from the body never do.

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "measure/landmarks/landmark_context.h"
+#include "measure/landmarks/profile_extreme.h"
 #include "measure/tape/convex_hull_2d.h"
 #include "scanners/core/errors.h"
 
@@ -51,8 +52,7 @@ bool Shoulder(Context* c, int sign, Eigen::Vector3d* out) {
   }
   if (n == 0) return false;
   yc /= n;
-  int best = -1;
-  double best_score = -kInf;
+  std::vector<int> candidates;
   for (Eigen::Index r = 0; r < c->points.rows(); ++r) {
     const Eigen::Vector3d p = c->P(static_cast<int>(r));
     const double x = sign * p.x();
@@ -60,23 +60,57 @@ bool Shoulder(Context* c, int sign, Eigen::Vector3d* out) {
         p.z() > arm.armpit_z + 0.14 * c->crown_z || x < 0.6 * ax) {
       continue;
     }
-    // A-pose: the upper-outer corner (x + z largest; the arm falls away
-    // steeper than 45 deg). T-pose: the top of the shoulder over the armpit.
-    double score;
-    if (arm.t_pose)
-      score = std::abs(x - ax) < 6 ? p.z() : -kInf;
-    else
-      score = x + p.z();
-    if (score > best_score) best_score = score, best = static_cast<int>(r);
+    // T-pose: the top of the shoulder over the armpit.
+    if (arm.t_pose && std::abs(x - ax) >= 6) continue;
+    candidates.push_back(static_cast<int>(r));
   }
-  if (best < 0 || !std::isfinite(best_score)) return false;
+  // A-pose: the upper-outer corner, the extreme along x + z (the arm falls
+  // away steeper than 45 deg); the centre of its cap, as the corner is
+  // rounded (Context::CapCentre).
+  const Eigen::Vector3d dir =
+      arm.t_pose ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d(sign, 0, 1).normalized();
+  const int best = c->CapCentre(candidates, dir);
+  if (best < 0) return false;
   *out = c->P(best);
   return true;
 }
 
+// The depth below a chord of the points `tz` (#N x 2: distance along the
+// chord and depth below it, mm), as a profile of `bins` stations every
+// bin_mm: the median per bin (empty bins are gaps), then the mean over
+// three bins of those not in a gap where at least two are not (NaN
+// elsewhere).
+std::vector<double> DepthProfile(const std::vector<Eigen::Vector2d>& tz, size_t bins,
+                                 double bin_mm) {
+  std::vector<std::vector<double>> depths(bins);
+  for (const Eigen::Vector2d& q : tz)
+    if (q.x() >= 0 && q.x() / bin_mm < static_cast<double>(bins))
+      depths[static_cast<size_t>(q.x() / bin_mm)].push_back(q.y());
+  std::vector<double> median(bins, kNaN), depth(bins, kNaN);
+  for (size_t k = 0; k < bins; ++k) {
+    std::vector<double>& d = depths[k];
+    if (d.empty()) continue;
+    std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
+    median[k] = d[d.size() / 2];
+  }
+  for (size_t k = 1; k + 1 < bins; ++k) {
+    double sum = 0;
+    int n = 0;
+    for (size_t j = k - 1; j <= k + 1; ++j)
+      if (std::isfinite(median[j])) sum += median[j], ++n;
+    if (n >= 2) depth[k] = sum / n;
+  }
+  return depth;
+}
+
 // Side neck point: in the coronal band through the neck, the contour point
 // farthest below the chord from the neck's side (3 % of stature above the
-// back neck point's height) to the shoulder point.
+// back neck point's height) to the shoulder point. The corner is rounded, so
+// its depth below the chord is flat over a few centimetres and single noisy
+// points would pick any of them: the depth is taken as the median per 3 mm
+// of chord, smoothed over three bins (DepthProfile), and the corner is the
+// vertex of that profile's parabola around its deepest bin
+// (profile_extreme.h).
 bool SideNeck(const Context& c, int sign, const Neck& neck, double top_z,
               const Eigen::Vector3d& acromion, Eigen::Vector3d* out) {
   double top_x = -kInf;
@@ -85,23 +119,40 @@ bool SideNeck(const Context& c, int sign, const Neck& neck, double top_z,
   }
   if (!std::isfinite(top_x)) return false;
   const Eigen::Vector2d p1(top_x, top_z), p2(sign * acromion.x(), acromion.z());
-  Eigen::Vector2d down(p2.y() - p1.y(), p1.x() - p2.x());
+  const Eigen::Vector2d along = (p2 - p1).normalized();
+  Eigen::Vector2d down(-along.y(), along.x());
   if (down.y() > 0) down = -down;
-  down.normalize();
-  double best = -kInf;
+  // Only the inner 40 % of the way out to the shoulder point: the base of
+  // the neck, not a dip where the shoulder line meets the arm.
+  const double reach = top_x + 0.4 * (p2.x() - top_x);
+  std::vector<Eigen::Vector2d> tz;
   for (Eigen::Index r = 0; r < c.points.rows(); ++r) {
     const Eigen::Vector3d p = c.P(static_cast<int>(r));
     const double x = sign * p.x();
-    // Only the inner 40 % of the way out to the shoulder point: the base of
-    // the neck, not a dip where the shoulder line meets the arm.
-    const double reach = top_x + 0.4 * (p2.x() - top_x);
     if (std::abs(p.y() - neck.y) > 8 || x < top_x - 10 || x > reach || p.z() < p2.y() - 5 ||
         p.z() > top_z + 5)
       continue;
-    const double depth = (Eigen::Vector2d(x, p.z()) - p1).dot(down);
-    if (depth > best) best = depth, *out = p;
+    const Eigen::Vector2d q = Eigen::Vector2d(x, p.z()) - p1;
+    tz.emplace_back(q.dot(along), q.dot(down));
   }
-  return std::isfinite(best);
+  constexpr double kBinMm = 3;
+  const size_t bins = static_cast<size_t>(std::ceil((p2 - p1).norm() / kBinMm)) + 1;
+  const std::vector<double> depth = DepthProfile(tz, bins, kBinMm);
+  size_t best = bins;
+  for (size_t k = 0; k < bins; ++k)
+    if (std::isfinite(depth[k]) && (best == bins || depth[k] > depth[best])) best = k;
+  if (best == bins) return false;
+  std::vector<double> at(bins);
+  for (size_t k = 0; k < bins; ++k) at[k] = (static_cast<double>(k) + 0.5) * kBinMm;
+  ProfileExtremeOptions corner;
+  corner.minimum = false;
+  corner.half_window = 2;
+  const double t = ProfileExtreme(corner, at, depth, best);
+  const size_t k = std::min(bins - 2, static_cast<size_t>(t / kBinMm));
+  const double d = std::isfinite(depth[k]) ? depth[k] : depth[best];
+  const Eigen::Vector2d xz = p1 + t * along + d * down;
+  *out = Eigen::Vector3d(sign * xz.x(), neck.y, xz.y());
+  return true;
 }
 
 // Axilla fold: in the section a quarter of the way from the armpit up to

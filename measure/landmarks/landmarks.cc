@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 
 #include "measure/catalogue/catalogue.h"
@@ -58,6 +59,30 @@ int Context::SmoothExtreme(const std::vector<int>& candidates, const Eigen::Vect
     const double score = sum / std::max(n, 1);
     if (score > best_score) best_score = score, best = r;
   }
+  return best;
+}
+
+int Context::CapCentre(const std::vector<int>& candidates, const Eigen::Vector3d& direction,
+                       double depth_mm) const {
+  if (candidates.empty()) return -1;
+  std::vector<double> value;
+  value.reserve(candidates.size());
+  for (int r : candidates) value.push_back(P(r).dot(direction));
+  const size_t k = std::min<size_t>(4, value.size() - 1);
+  std::nth_element(value.begin(), value.begin() + static_cast<std::ptrdiff_t>(k), value.end(),
+                   std::greater<double>());
+  const double top = value[k];
+  std::vector<int> cap;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (int r : candidates) {
+    if (P(r).dot(direction) < top - depth_mm) continue;
+    cap.push_back(r);
+    centre += P(r);
+  }
+  centre /= static_cast<double>(cap.size());
+  int best = cap.front();
+  for (int r : cap)
+    if ((P(r) - centre).squaredNorm() < (P(best) - centre).squaredNorm()) best = r;
   return best;
 }
 
