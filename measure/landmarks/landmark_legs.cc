@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "measure/landmarks/landmark_context.h"
+#include "measure/landmarks/profile_extreme.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke::landmarks {
@@ -89,6 +90,38 @@ int BestNear(const Context& c, const std::vector<std::vector<int>>& leg, double 
   return c.SmoothExtreme(candidates, direction, radius_mm, radius_mm / 2);
 }
 
+// The calf's level: the height of the leg's largest girth (convex hull of
+// its section) between lo and hi (mm), refined off the slice grid
+// (profile_extreme.h); -1 when the leg has no section there. The girth
+// profile is smoothed over five slices first: on a leg whose girth barely
+// changes between the calf and the knee the single largest slice is noise.
+double CalfLevel(const Context& c, const std::vector<std::vector<int>>& leg, double lo, double hi) {
+  std::vector<double> at, raw;
+  for (int s = SliceAt(c.slices, lo) - 5; s <= SliceAt(c.slices, hi) + 5; ++s) {
+    if (s < 0 || s >= static_cast<int>(c.slices.size())) continue;
+    const std::vector<int>& rows = leg[static_cast<size_t>(s)];
+    at.push_back(c.slices[static_cast<size_t>(s)].z);
+    raw.push_back(rows.size() < 12 ? kNaN : HullPerimeter(c.points, rows));
+  }
+  std::vector<double> girth(raw.size(), kNaN);
+  size_t best = 0;
+  double level = -1;
+  for (size_t k = 2; k + 2 < raw.size(); ++k) {
+    double sum = 0;
+    int n = 0;
+    for (size_t j = k - 2; j <= k + 2; ++j)
+      if (std::isfinite(raw[j])) sum += raw[j], ++n;
+    if (n >= 3) girth[k] = sum / n;
+    const bool inside = at[k] >= lo - 0.5 * c.step && at[k] <= hi + 0.5 * c.step;
+    if (inside && std::isfinite(girth[k]) && (level < 0 || girth[k] > girth[best]))
+      best = k, level = at[k];
+  }
+  if (level < 0) return -1;
+  ProfileExtremeOptions largest;
+  largest.minimum = false;
+  return ProfileExtreme(largest, at, girth, best);
+}
+
 void FindLeg(Context* c, int sign) {
   const std::string side = Side(sign);
   const auto leg = TrackLeg(*c, sign);
@@ -132,16 +165,19 @@ void FindLeg(Context* c, int sign) {
     else
       c->Missing("ankle_outside" + side, "no points at the outer ankle");
   }
-  // Calf: the most backward point of the leg between 30 % and 90 % of the
-  // way from the ankle to the knee, averaged over 25 mm (the calf's back is
-  // a long flat arc; the bulge's middle is wanted, not the noise's peak).
-  const double lo = ankle_z + 0.3 * (knee_z - ankle_z), hi = ankle_z + 0.9 * (knee_z - ankle_z);
+  // Calf: the level of the leg's largest girth (CalfLevel), the back of the
+  // leg there.
+  const double calf_z =
+      CalfLevel(*c, leg, ankle_z + 0.25 * (knee_z - ankle_z), ankle_z + 0.9 * (knee_z - ankle_z));
   const int calf =
-      BestNear(*c, leg, 0.5 * (lo + hi), 0.5 * (hi - lo), all, -Eigen::Vector3d::UnitY(), 25);
-  if (calf >= 0)
-    c->Put("calf" + side, c->P(calf), 0.6, "leg_back_max");
-  else
+      calf_z > 0 ? BestNear(*c, leg, calf_z, 4, all, -Eigen::Vector3d::UnitY(), 12) : -1;
+  if (calf >= 0) {
+    Eigen::Vector3d p = c->P(calf);
+    p.z() = calf_z;
+    c->Put("calf" + side, p, 0.6, "leg_girth_max");
+  } else {
     c->Missing("calf" + side, "no leg section between ankle and knee");
+  }
 }
 
 }  // namespace

@@ -76,9 +76,7 @@ Body SynthBodyGenerator::Generate(const SynthBodyOptions& options) {
     if (!options.posture.empty()) ApplyParametricPosture(options.posture, &p);
     p.Check();
     Body body = GenerateParametricBody(p);
-    DefinedLandmarkOptions defined;
-    defined.calves = false;  // the construction's calf ring is the leg's bulge
-    PlaceDefinedLandmarks(defined, {}, &body);
+    PlaceDefinedLandmarks(DefinedLandmarkOptions{}, {}, &body);
     return body;
   }
   const std::filesystem::path dir =
