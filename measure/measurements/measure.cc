@@ -101,7 +101,10 @@ double GirthSd(const MeasureOptions& o, const MeasurementDef& m, const PointClou
   for (const std::string& name : m.datum)
     var += Sigma(o.uncertainty, set, name) * Sigma(o.uncertainty, set, name);
   double sd = std::sqrt(var);
-  if (m.plane == GirthPlane::kHorizontal) sd /= static_cast<double>(m.datum.size());
+  // A plane at the points' mean height, or through the points, moves at
+  // their centroid by the SD of their mean (a tilt adds little to a girth).
+  if (m.plane == GirthPlane::kHorizontal || m.plane == GirthPlane::kThroughPoints)
+    sd /= static_cast<double>(m.datum.size());
   if (m.plane == GirthPlane::kPerpendicularToAxis) sd = Sigma(o.uncertainty, set, m.datum[0]);
   const double probe = std::min(sd, 10.0);
   double change = 0;
