@@ -12,8 +12,7 @@ namespace bespoke::landmarks {
 namespace {
 
 // Samples every 5 mm of a parabola with its minimum at 1073.4 mm.
-void Parabola(std::vector<double>* at, std::vector<double>* value, double noise_mm,
-              unsigned seed) {
+void Parabola(std::vector<double>* at, std::vector<double>* value, double noise_mm, unsigned seed) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> noise(0, noise_mm);
   for (double z = 1000; z <= 1150; z += 5) {
