@@ -1,6 +1,5 @@
 // Crown, crotch and the trunk levels: bust, under-bust, waist, middle hip,
 // hip (docs/landmarks.md has the definitions and why).
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -314,45 +313,13 @@ void Bust(Context* c, double* bust_z) {
   }
 }
 
-// The front profile's bend on the vertical x = x0 between heights lo and
-// hi: an envelope of the trunk's most forward y per 2 mm of height within
-// 8 mm of x0, and at each station z (every `step` from lo) twice the
-// curvature of the least-squares parabola through the envelope within
-// +-15 mm, scaled to the second difference over +-10 mm (200 c; positive
-// where the profile turns concave, as at a fold). A parabola through some
-// 15 envelope bins averages the range noise that a second difference of
-// three single slices amplifies. NaN where fewer than 6 bins hold points.
-std::vector<double> FrontBend(const Context& c, double x0, double lo, double hi, double step) {
-  constexpr double kBinMm = 2, kHalfMm = 15;
-  const double base = lo - kHalfMm;
-  std::vector<double> envelope(static_cast<size_t>((hi - lo + 2 * kHalfMm) / kBinMm) + 1, -kInf);
-  for (int s = SliceAt(c.slices, base); s <= SliceAt(c.slices, hi + kHalfMm); ++s) {
-    const std::vector<int> rows = c.TrunkRows(c.slices[static_cast<size_t>(s)]);
-    double middle = 0;  // the section's mean y: only points in front of it
-    for (int r : rows) middle += c.points(r, 1) / static_cast<double>(rows.size());
-    for (int r : rows) {
-      const double k = (c.points(r, 2) - base) / kBinMm;
-      if (std::abs(c.points(r, 0) - x0) >= 8 || c.points(r, 1) < middle || k < 0 ||
-          k >= static_cast<double>(envelope.size()))
-        continue;
-      double& e = envelope[static_cast<size_t>(k)];
-      e = std::max(e, c.points(r, 1));
-    }
+// Most forward y of the trunk within 8 mm of x = x0 in the slice at z.
+double FrontAt(const Context& c, double z, double x0) {
+  double best = -kInf;
+  for (int r : c.TrunkRows(c.At(z))) {
+    if (std::abs(c.points(r, 0) - x0) < 8) best = std::max(best, c.points(r, 1));
   }
-  std::vector<double> bend;
-  for (double z = lo; z < hi; z += step) {
-    Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
-    Eigen::Vector3d atb = Eigen::Vector3d::Zero();
-    int n = 0;
-    for (size_t k = 0; k < envelope.size(); ++k) {
-      const double u = base + (static_cast<double>(k) + 0.5) * kBinMm - z;
-      if (std::abs(u) > kHalfMm || !std::isfinite(envelope[k])) continue;
-      const Eigen::Vector3d row(1, u, u * u);
-      ata += row * row.transpose(), atb += row * envelope[k], ++n;
-    }
-    bend.push_back(n >= 6 ? 200 * ata.ldlt().solve(atb)(2) : kNaN);
-  }
-  return bend;
+  return best;
 }
 
 }  // namespace
@@ -361,39 +328,41 @@ void FindTrunkLevels(Context* c) {
   const double h = c->crown_z;
   double bust_z = -1;
   Bust(c, &bust_z);
-  // Under-bust: on the vertical through the bust point, the fold where the
-  // breast's underside meets the chest wall bends the front profile
-  // (FrontBend); searched 1-8 % of stature below.
+  // Under-bust: on the vertical through the bust point, the front profile
+  // bends most sharply (largest second difference over +-10 mm) where the
+  // breast's underside meets the chest wall; searched 1-8 % of stature below.
   double under_z = -1;
   if (c->Has("bust_right") || c->Has("bust_left")) {
     const Eigen::Vector3d bust = c->Has("bust_right") ? c->Pos("bust_right") : c->Pos("bust_left");
     // The bend averaged over both breasts' verticals where found: the range
-    // noise in one profile's bend rivals a small fold's.
+    // noise in one profile's second difference rivals a small fold's bend.
     std::vector<double> xs;
     for (const char* name : {"bust_right", "bust_left"})
       if (c->Has(name)) xs.push_back(c->Pos(name).x());
+    const auto bend_at = [&](double z) {
+      double sum = 0;
+      for (double x : xs)
+        sum += FrontAt(*c, z + 10, x) - 2 * FrontAt(*c, z, x) + FrontAt(*c, z - 10, x);
+      return sum / static_cast<double>(xs.size());
+    };
     // The fold: going down from the bust, the first local peak of the bend
     // that reaches half the sharpest bend in the window (a flat chest's
     // pectoral edge is a weak fold, and a belly's top lower down can bend
     // more), then the vertex of the bend profile's parabola around it
-    // (profile_extreme.h), off the station grid. Above the fold the breast's
+    // (profile_extreme.h), off the slice grid. Above the fold the breast's
     // front is convex (negative bend), so nothing there competes.
-    const double lo = bust.z() - 0.08 * h, hi = bust.z() - 0.01 * h;
     std::vector<double> at, bends;
-    for (double z = lo - 2 * c->step; z < hi + 2 * c->step; z += c->step) at.push_back(z);
-    bends.assign(at.size(), 0.0);
-    for (double x : xs) {
-      const std::vector<double> b =
-          FrontBend(*c, x, at.front(), at.back() + 0.5 * c->step, c->step);
-      for (size_t k = 0; k < at.size() && k < b.size(); ++k)
-        bends[k] += b[k] / static_cast<double>(xs.size());
-    }
+    std::vector<bool> inside;
     double sharpest = -kInf;
-    for (size_t k = 0; k < at.size(); ++k)
-      if (at[k] >= lo && at[k] < hi && std::isfinite(bends[k]))
-        sharpest = std::max(sharpest, bends[k]);
+    for (double z = bust.z() - 0.08 * h - 2 * c->step; z < bust.z() - 0.01 * h + 2 * c->step;
+         z += c->step) {
+      at.push_back(c->At(z).z);
+      bends.push_back(bend_at(at.back()));
+      inside.push_back(z >= bust.z() - 0.08 * h && z < bust.z() - 0.01 * h);
+      if (inside.back() && std::isfinite(bends.back())) sharpest = std::max(sharpest, bends.back());
+    }
     for (size_t k = at.size() - 1; k-- > 1 && sharpest > 0 && under_z < 0;) {
-      if (at[k] >= lo && at[k] < hi && bends[k] >= 0.5 * sharpest && !(bends[k - 1] > bends[k]) &&
+      if (inside[k] && bends[k] >= 0.5 * sharpest && !(bends[k - 1] > bends[k]) &&
           !(bends[k + 1] > bends[k])) {
         ProfileExtremeOptions peak;
         peak.minimum = false;
