@@ -136,19 +136,16 @@ void FindArm(Context* c, int sign) {
   // station off the 5 mm grid (profile_extreme.h).
   double wrist_t = -1;
   std::vector<double> at, radius;
-  size_t best = 0;
+  std::vector<bool> inside;
   for (double t = f.length - 275; t <= f.length - 75; t += 5) {
     at.push_back(t);
     radius.push_back(SectionRadius(*c, f, t, 4));
-    const bool inside = t >= f.length - 260 && t <= f.length - 90;
-    if (inside && std::isfinite(radius.back()) && (wrist_t < 0 || radius.back() < radius[best]))
-      best = at.size() - 1, wrist_t = t;
+    inside.push_back(t >= f.length - 260 && t <= f.length - 90);
   }
-  if (wrist_t >= 0) {
-    ProfileExtremeOptions narrowest;
-    narrowest.half_window = 2;
-    wrist_t = ProfileExtreme(narrowest, at, radius, best);
-  }
+  ProfileExtremeOptions narrowest;
+  narrowest.half_window = 2;
+  const size_t best = BestSample(narrowest, radius, inside);
+  if (best < at.size()) wrist_t = ProfileExtreme(narrowest, at, radius, best);
   if (wrist_t < 0) {
     for (const char* n : {"upper_arm", "elbow", "wrist"})
       c->Missing(n + side, "the forearm was not found");

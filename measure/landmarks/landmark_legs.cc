@@ -104,22 +104,20 @@ double CalfLevel(const Context& c, const std::vector<std::vector<int>>& leg, dou
     raw.push_back(rows.size() < 12 ? kNaN : HullPerimeter(c.points, rows));
   }
   std::vector<double> girth(raw.size(), kNaN);
-  size_t best = 0;
-  double level = -1;
-  for (size_t k = 2; k + 2 < raw.size(); ++k) {
+  std::vector<bool> inside(raw.size());
+  for (size_t k = 0; k < raw.size(); ++k) {
+    inside[k] = at[k] >= lo - 0.5 * c.step && at[k] <= hi + 0.5 * c.step;
+    if (k < 2 || k + 2 >= raw.size()) continue;
     double sum = 0;
     int n = 0;
     for (size_t j = k - 2; j <= k + 2; ++j)
       if (std::isfinite(raw[j])) sum += raw[j], ++n;
     if (n >= 3) girth[k] = sum / n;
-    const bool inside = at[k] >= lo - 0.5 * c.step && at[k] <= hi + 0.5 * c.step;
-    if (inside && std::isfinite(girth[k]) && (level < 0 || girth[k] > girth[best]))
-      best = k, level = at[k];
   }
-  if (level < 0) return -1;
   ProfileExtremeOptions largest;
   largest.minimum = false;
-  return ProfileExtreme(largest, at, girth, best);
+  const size_t best = BestSample(largest, girth, inside);
+  return best < at.size() ? ProfileExtreme(largest, at, girth, best) : -1;
 }
 
 void FindLeg(Context* c, int sign) {

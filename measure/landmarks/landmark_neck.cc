@@ -138,15 +138,13 @@ bool SideNeck(const Context& c, int sign, const Neck& neck, double top_z,
   constexpr double kBinMm = 3;
   const size_t bins = static_cast<size_t>(std::ceil((p2 - p1).norm() / kBinMm)) + 1;
   const std::vector<double> depth = DepthProfile(tz, bins, kBinMm);
-  size_t best = bins;
-  for (size_t k = 0; k < bins; ++k)
-    if (std::isfinite(depth[k]) && (best == bins || depth[k] > depth[best])) best = k;
-  if (best == bins) return false;
-  std::vector<double> at(bins);
-  for (size_t k = 0; k < bins; ++k) at[k] = (static_cast<double>(k) + 0.5) * kBinMm;
   ProfileExtremeOptions corner;
   corner.minimum = false;
   corner.half_window = 2;
+  const size_t best = BestSample(corner, depth, std::vector<bool>(bins, true));
+  if (best == bins) return false;
+  std::vector<double> at(bins);
+  for (size_t k = 0; k < bins; ++k) at[k] = (static_cast<double>(k) + 0.5) * kBinMm;
   const double t = ProfileExtreme(corner, at, depth, best);
   const size_t k = std::min(bins - 2, static_cast<size_t>(t / kBinMm));
   const double d = std::isfinite(depth[k]) ? depth[k] : depth[best];

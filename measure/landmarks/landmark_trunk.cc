@@ -339,10 +339,19 @@ void FindTrunkLevels(Context* c) {
     std::vector<double> xs;
     for (const char* name : {"bust_right", "bust_left"})
       if (c->Has(name)) xs.push_back(c->Pos(name).x());
+    // FrontAt per vertical and slice, computed once: each slice serves
+    // three stations' second differences.
+    std::vector<std::map<int, double>> fronts(xs.size());
+    const auto front = [&](size_t i, double z) {
+      const int s = SliceAt(c->slices, z);
+      auto it = fronts[i].find(s);
+      if (it == fronts[i].end()) it = fronts[i].emplace(s, FrontAt(*c, z, xs[i])).first;
+      return it->second;
+    };
     const auto bend_at = [&](double z) {
       double sum = 0;
-      for (double x : xs)
-        sum += FrontAt(*c, z + 10, x) - 2 * FrontAt(*c, z, x) + FrontAt(*c, z - 10, x);
+      for (size_t i = 0; i < xs.size(); ++i)
+        sum += front(i, z + 10) - 2 * front(i, z) + front(i, z - 10);
       return sum / static_cast<double>(xs.size());
     };
     // The fold: going down from the bust, the first local peak of the bend
@@ -370,8 +379,9 @@ void FindTrunkLevels(Context* c) {
         under_z = ProfileExtreme(peak, at, bends, k);
       }
     }
-    // A flat chest (most men) has no clear fold: the noise's largest bend
-    // wins, hence the lower confidence (docs/landmarks.md).
+    // A flat chest (most men) has a weak fold that noise can rival, hence
+    // the lower confidence; with no concave bend at all, 4 % of stature
+    // under the bust point (docs/landmarks.md).
     if (under_z < 0) under_z = bust.z() - 0.04 * h;
     PutSeam(c, "under_bust", under_z, true, 0.6, "front_profile_bend");
   } else {
@@ -405,15 +415,16 @@ void FindTrunkLevels(Context* c) {
     // for the fit): the narrowest slice in the band, then the vertex of the
     // profile's parabola around it (profile_extreme.h).
     std::vector<double> at, girth;
-    size_t best = 0;
+    std::vector<bool> in_band;
     for (double z = waist_lo - 3 * c->step; z <= waist_top + 3 * c->step; z += c->step) {
-      const std::vector<int> rows = c->TrunkRows(c->At(z));
-      at.push_back(c->At(z).z);
+      const Slice& slice = c->At(z);
+      const std::vector<int> rows = c->TrunkRows(slice);
+      at.push_back(slice.z);
       girth.push_back(rows.size() < 20 ? kNaN : HullPerimeter(c->points, rows));
-      const bool in_band = z >= waist_lo && z <= waist_top;
-      if (in_band && std::isfinite(girth.back()) && (waist_z < 0 || girth.back() < girth[best]))
-        best = at.size() - 1, waist_z = at.back();
+      in_band.push_back(z >= waist_lo && z <= waist_top);
     }
+    const size_t best = BestSample({}, girth, in_band);
+    if (best < at.size()) waist_z = at[best];
     if (waist_z > waist_top - 2 * c->step) {
       waist_confidence = 0.5, waist_method = "band_top_no_narrowing";
     } else if (waist_z > 0) {

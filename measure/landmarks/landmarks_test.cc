@@ -365,8 +365,8 @@ TEST(MakeHumanLandmarks, UpperArmsRestingOnAHeavyTrunkAreTheArms) {
 
 // The bust point on two hard cases of the full population (arms 30 deg): a
 // heavy woman whose breast hangs just under an armpit found 70 mm low (seed
-// 1006; the bust was found on the belly, 180 mm low) and a man with a belly
-// under a flat chest (seed 1028; the belly's front, 145 mm low).
+// 1006; a window below that armpit finds the belly, 180 mm low) and a man
+// with a belly under a flat chest (seed 1028; the belly's front, 145 mm low).
 TEST(MakeHumanLandmarks, BustPointOverABellyAndUnderALowArmpit) {
   BESPOKE_REQUIRE_SHARED(shared);
   MakeHumanModel model(shared / "data/bodies/makehuman");
@@ -425,7 +425,9 @@ TEST(MakeHumanLandmarks, SameBodyScannedAgainKeepsItsPoints) {
                 hi.y() - lo.y(), hi.z() - lo.z());
     EXPECT_LE(hi.z() - lo.z(), 11.0) << name << " height range (mm)";
     // The shoulder's corner runs along x as much as along z.
-    if (StartsWith(name, "shoulder")) EXPECT_LE(hi.x() - lo.x(), 8.0) << name << " x range (mm)";
+    if (StartsWith(name, "shoulder")) {
+      EXPECT_LE(hi.x() - lo.x(), 8.0) << name << " x range (mm)";
+    }
   }
 }
 

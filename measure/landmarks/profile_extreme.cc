@@ -37,4 +37,16 @@ double ProfileExtreme(const ProfileExtremeOptions& options, const std::vector<do
   return std::clamp(at[best] - coef(1) / (2 * coef(0)), left, right);
 }
 
+size_t BestSample(const ProfileExtremeOptions& options, const std::vector<double>& value,
+                  const std::vector<bool>& eligible) {
+  if (value.size() != eligible.size()) throw InternalError("BestSample: sizes differ");
+  size_t best = value.size();
+  for (size_t k = 0; k < value.size(); ++k) {
+    if (!eligible[k] || !std::isfinite(value[k])) continue;
+    if (best == value.size() || (options.minimum ? value[k] < value[best] : value[k] > value[best]))
+      best = k;
+  }
+  return best;
+}
+
 }  // namespace bespoke::landmarks

@@ -32,6 +32,13 @@ struct ProfileExtremeOptions {
 double ProfileExtreme(const ProfileExtremeOptions& options, const std::vector<double>& at,
                       const std::vector<double>& value, size_t best);
 
+// The index of the best sample (smallest for options.minimum, else the
+// largest; the first of equals) among the finite `value`s whose `eligible`
+// entry is true (#S each); value.size() when there is none. Throws
+// InternalError when the sizes differ.
+size_t BestSample(const ProfileExtremeOptions& options, const std::vector<double>& value,
+                  const std::vector<bool>& eligible);
+
 }  // namespace bespoke::landmarks
 
 #endif  // BESPOKE_MEASURE_LANDMARKS_PROFILE_EXTREME_H_

@@ -67,5 +67,18 @@ TEST(ProfileExtreme, KeepsTheSampleWhereTheFitCannotHelp) {
   EXPECT_THROW(ProfileExtreme({}, at, value, 5), InternalError);
 }
 
+TEST(ProfileExtreme, BestSampleIsTheFirstBestEligibleFiniteOne) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<double> value{1, nan, 3, 0.5, 3, 0.5};
+  const std::vector<bool> all(6, true), some{false, true, true, false, true, true};
+  EXPECT_EQ(BestSample({}, value, all), 3u);
+  EXPECT_EQ(BestSample({}, value, some), 5u);
+  ProfileExtremeOptions maximum;
+  maximum.minimum = false;
+  EXPECT_EQ(BestSample(maximum, value, all), 2u);
+  EXPECT_EQ(BestSample({}, value, std::vector<bool>(6, false)), 6u);
+  EXPECT_THROW(BestSample({}, value, std::vector<bool>(5, true)), InternalError);
+}
+
 }  // namespace
 }  // namespace bespoke::landmarks
