@@ -103,17 +103,10 @@ double CalfLevel(const Context& c, const std::vector<std::vector<int>>& leg, dou
     at.push_back(c.slices[static_cast<size_t>(s)].z);
     raw.push_back(rows.size() < 12 ? kNaN : HullPerimeter(c.points, rows));
   }
-  std::vector<double> girth(raw.size(), kNaN);
+  const std::vector<double> girth = WindowMean(raw, 2, 3);
   std::vector<bool> inside(raw.size());
-  for (size_t k = 0; k < raw.size(); ++k) {
+  for (size_t k = 0; k < raw.size(); ++k)
     inside[k] = at[k] >= lo - 0.5 * c.step && at[k] <= hi + 0.5 * c.step;
-    if (k < 2 || k + 2 >= raw.size()) continue;
-    double sum = 0;
-    int n = 0;
-    for (size_t j = k - 2; j <= k + 2; ++j)
-      if (std::isfinite(raw[j])) sum += raw[j], ++n;
-    if (n >= 3) girth[k] = sum / n;
-  }
   ProfileExtremeOptions largest;
   largest.minimum = false;
   const size_t best = BestSample(largest, girth, inside);

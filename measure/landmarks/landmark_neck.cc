@@ -86,21 +86,14 @@ std::vector<double> DepthProfile(const std::vector<Eigen::Vector2d>& tz, size_t 
   for (const Eigen::Vector2d& q : tz)
     if (q.x() >= 0 && q.x() / bin_mm < static_cast<double>(bins))
       depths[static_cast<size_t>(q.x() / bin_mm)].push_back(q.y());
-  std::vector<double> median(bins, kNaN), depth(bins, kNaN);
+  std::vector<double> median(bins, kNaN);
   for (size_t k = 0; k < bins; ++k) {
     std::vector<double>& d = depths[k];
     if (d.empty()) continue;
     std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
     median[k] = d[d.size() / 2];
   }
-  for (size_t k = 1; k + 1 < bins; ++k) {
-    double sum = 0;
-    int n = 0;
-    for (size_t j = k - 1; j <= k + 1; ++j)
-      if (std::isfinite(median[j])) sum += median[j], ++n;
-    if (n >= 2) depth[k] = sum / n;
-  }
-  return depth;
+  return WindowMean(median, 1, 2);
 }
 
 // Side neck point: in the coronal band through the neck, the contour point

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "scanners/core/errors.h"
 
@@ -35,6 +36,18 @@ double ProfileExtreme(const ProfileExtremeOptions& options, const std::vector<do
   const double left = best > 0 ? at[best - 1] : at[best];
   const double right = best + 1 < at.size() ? at[best + 1] : at[best];
   return std::clamp(at[best] - coef(1) / (2 * coef(0)), left, right);
+}
+
+std::vector<double> WindowMean(const std::vector<double>& value, size_t half, int min_count) {
+  std::vector<double> out(value.size(), std::numeric_limits<double>::quiet_NaN());
+  for (size_t k = half; k + half < value.size(); ++k) {
+    double sum = 0;
+    int n = 0;
+    for (size_t j = k - half; j <= k + half; ++j)
+      if (std::isfinite(value[j])) sum += value[j], ++n;
+    if (n >= min_count) out[k] = sum / n;
+  }
+  return out;
 }
 
 size_t BestSample(const ProfileExtremeOptions& options, const std::vector<double>& value,

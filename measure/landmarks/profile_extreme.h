@@ -32,6 +32,11 @@ struct ProfileExtremeOptions {
 double ProfileExtreme(const ProfileExtremeOptions& options, const std::vector<double>& at,
                       const std::vector<double>& value, size_t best);
 
+// A profile smoothed across gaps: at each sample the mean of the finite
+// samples within `half` of it (#S); NaN where fewer than `min_count` are
+// finite or the window runs off either end.
+std::vector<double> WindowMean(const std::vector<double>& value, size_t half, int min_count);
+
 // The index of the best sample (smallest for options.minimum, else the
 // largest; the first of equals) among the finite `value`s whose `eligible`
 // entry is true (#S each); value.size() when there is none. Throws

@@ -80,5 +80,16 @@ TEST(ProfileExtreme, BestSampleIsTheFirstBestEligibleFiniteOne) {
   EXPECT_THROW(BestSample({}, value, std::vector<bool>(5, true)), InternalError);
 }
 
+TEST(ProfileExtreme, WindowMeanSkipsGapsAndEnds) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<double> m = WindowMean({1, 2, nan, 4, 5}, 1, 2);
+  EXPECT_TRUE(std::isnan(m[0]));
+  EXPECT_DOUBLE_EQ(m[1], 1.5);
+  EXPECT_DOUBLE_EQ(m[2], 3);
+  EXPECT_DOUBLE_EQ(m[3], 4.5);
+  EXPECT_TRUE(std::isnan(m[4]));
+  EXPECT_TRUE(std::isnan(WindowMean({1, nan, nan}, 1, 2)[1]));
+}
+
 }  // namespace
 }  // namespace bespoke::landmarks
