@@ -108,6 +108,29 @@ double TPoseReach(const Context& c, double side_x, double z, int sign) {
   return reach;
 }
 
+// Whether slice s's extent `ext` (x' = sign * x of the trunk's piece, with
+// the arm while they are one) lies 30 mm below the widest of the 60 mm above
+// it (up to slice `top`): the arm has left the trunk's piece there.
+bool Dropped(const std::vector<double>& ext, int s, int top) {
+  double above = -kInf;
+  for (int t = s + 1; t <= std::min(top, s + 12); ++t)
+    above = std::max(above, ext[static_cast<size_t>(t)]);
+  return std::isfinite(above) && ext[static_cast<size_t>(s)] < above - 30;
+}
+
+// Where the arm leaves the trunk's section, going down the slices from
+// `top` to `bottom`: the first slice Dropped whose extent passes
+// `trunk_like`, for three slices; -1 when none.
+template <typename TrunkLike>
+int ArmLeavesTrunk(const std::vector<double>& ext, int bottom, int top, TrunkLike trunk_like) {
+  auto dropped = [&](int s) {
+    return Dropped(ext, s, top) && trunk_like(ext[static_cast<size_t>(s)]);
+  };
+  for (int s = top - 1; s >= bottom + 2; --s)
+    if (dropped(s) && dropped(s - 1) && dropped(s - 2)) return s;
+  return -1;
+}
+
 void FindArmpit(Context* c, int sign) {
   ArmInfo& arm = c->arm[sign > 0 ? 0 : 1];
   const std::string name = "armpit" + Side(sign);
@@ -127,18 +150,7 @@ void FindArmpit(Context* c, int sign) {
   // widest of the 60 mm above it down to a trunk-like width (within 90 mm
   // of the waist's; a T-pose arm tilted upwards shortens gradually in the
   // slices through it), and stays there for two more slices.
-  int k = -1;
-  for (int s = top - 1; s >= bottom + 2 && k < 0; --s) {
-    double above = -kInf;
-    for (int t = s + 1; t <= std::min(top, s + 12); ++t)
-      above = std::max(above, ext[static_cast<size_t>(t)]);
-    bool drop = true;
-    for (int t = s; t >= s - 2; --t) {
-      drop &=
-          ext[static_cast<size_t>(t)] < above - 30 && ext[static_cast<size_t>(t)] < waist_ext + 90;
-    }
-    if (drop) k = s;
-  }
+  const int k = ArmLeavesTrunk(ext, bottom, top, [&](double e) { return e < waist_ext + 90; });
   if (k < 0) {
     // No gap between arm and trunk anywhere: the arm touches the torso.
     arm.touching = true;
@@ -249,19 +261,19 @@ void CentreLineFromHand(const Context& c, int side, ArmInfo* arm) {
 }
 
 // The 2-D pieces of slice `s` made of the trunk's and this arm's points
-// (other limbs left out, linked within 12 mm), the central ones (holding
+// (other limbs left out, linked within `link_mm`), the central ones (holding
 // trunk points within 60 mm of the middle; a hole can split the trunk's
 // section) merged into the first. `central` gets 0 when there is one, -1
 // when none.
 std::vector<Piece> TrunkAndArmPieces(const Context& c, const Slice& s, Part arm_part,
-                                     int* central) {
+                                     double link_mm, int* central) {
   std::vector<int> rows;
   for (int r : s.rows) {
     const Part p = c.PartOf(r);
     if (p == Part::kTrunk || p == arm_part) rows.push_back(r);
   }
   std::vector<Piece> out(1);
-  for (Piece& piece : SplitPieces(c.points, rows, 12)) {
+  for (Piece& piece : SplitPieces(c.points, rows, link_mm)) {
     bool centre = false;
     for (int r : piece.rows) centre |= std::abs(c.points(r, 0)) < 60 && c.PartOf(r) == Part::kTrunk;
     if (centre)
@@ -271,6 +283,25 @@ std::vector<Piece> TrunkAndArmPieces(const Context& c, const Slice& s, Part arm_
   }
   *central = out[0].rows.empty() ? -1 : 0;
   return out;
+}
+
+// Links of the armpit's pieces (mm).
+constexpr double kWideLinkMm = 12, kFineLinkMm = 7;
+
+// Near the apex the gap between arm and trunk narrows slowly, so pieces
+// linked within 12 mm join them 10-25 mm below it on a dense scan. From the
+// wide link's level `k`, the level rises while the pieces of a finer link
+// (`fine`: their trunk extents) still show the arm apart (Dropped) from a
+// trunk as wide as at `k` (within 15 mm of `side`): where the fine link
+// breaks the trunk's side off instead (a sparse part of the scan), the
+// trunk's piece narrows and the level stops.
+int RaiseWithFineLink(const std::vector<double>& fine, double side, int k, int top) {
+  for (int s = k + 1; s < top; ++s) {
+    const double e = fine[static_cast<size_t>(s)];
+    if (!Dropped(fine, s, top) || std::abs(e - side) > 15) break;
+    k = s;
+  }
+  return k;
 }
 
 // The armpit with the structure: in the slices from 100 mm above to 120 mm
@@ -303,26 +334,23 @@ void FindArmpitFromStructure(Context* c, int sign) {
   const Eigen::Vector3d corner = b.armpit[side];
   const int top = SliceAt(c->slices, corner.z() + 100),
             bottom = SliceAt(c->slices, corner.z() - 120);
-  std::vector<double> ext(c->slices.size(), -kInf);
-  for (int s = bottom; s <= top; ++s) {
-    int central = -1;
-    const auto pieces =
-        TrunkAndArmPieces(*c, c->slices[static_cast<size_t>(s)], arm_part, &central);
-    if (central >= 0)
-      for (int r : pieces[static_cast<size_t>(central)].rows)
-        ext[static_cast<size_t>(s)] = std::max(ext[static_cast<size_t>(s)], sign * c->points(r, 0));
-  }
-  int k = -1;
-  for (int s = top - 1; s >= bottom + 2 && k < 0; --s) {
-    double above = -kInf;
-    for (int t = s + 1; t <= std::min(top, s + 12); ++t)
-      above = std::max(above, ext[static_cast<size_t>(t)]);
-    bool drop = std::isfinite(above);
-    for (int t = s; t >= s - 2; --t)
-      drop &= ext[static_cast<size_t>(t)] < above - 30 &&
-              ext[static_cast<size_t>(t)] < sign * corner.x() + 60;
-    if (drop) k = s;
-  }
+  auto extents = [&](double link_mm) {
+    std::vector<double> ext(c->slices.size(), -kInf);
+    for (int s = bottom; s <= top; ++s) {
+      int central = -1;
+      const auto pieces =
+          TrunkAndArmPieces(*c, c->slices[static_cast<size_t>(s)], arm_part, link_mm, &central);
+      if (central >= 0)
+        for (int r : pieces[static_cast<size_t>(central)].rows)
+          ext[static_cast<size_t>(s)] =
+              std::max(ext[static_cast<size_t>(s)], sign * c->points(r, 0));
+    }
+    return ext;
+  };
+  // Pieces linked within 12 mm keep a sparse scan's trunk in one piece.
+  const std::vector<double> ext = extents(kWideLinkMm);
+  const int k =
+      ArmLeavesTrunk(ext, bottom, top, [&](double e) { return e < sign * corner.x() + 60; });
   if (k < 0) {
     arm.touching = true;
     arm.armpit = corner;
@@ -330,9 +358,14 @@ void FindArmpitFromStructure(Context* c, int sign) {
     c->Put(name, corner, 0.4, "structure_corner_arm_touching", {"arm_touching_torso"});
     return;
   }
+  // The level rises with a finer link, twice the spacing of the scan's
+  // sparse parts (RaiseWithFineLink); the arm's and the trunk's pieces that
+  // place the point across are the wide link's.
+  const double fine_link = std::clamp(2 * c->index->SpacingQuantile(0.9), kFineLinkMm, kWideLinkMm);
+  const int level = RaiseWithFineLink(extents(fine_link), ext[static_cast<size_t>(k)], k, top);
   const Slice& below = c->slices[static_cast<size_t>(k)];
   int central = -1;
-  const auto pieces = TrunkAndArmPieces(*c, below, arm_part, &central);
+  const auto pieces = TrunkAndArmPieces(*c, below, arm_part, kWideLinkMm, &central);
   const double side_x = ext[static_cast<size_t>(k)];
   // The arm's piece: the largest lateral piece within 250 mm of the trunk's side.
   int piece = -1;
@@ -345,7 +378,7 @@ void FindArmpitFromStructure(Context* c, int sign) {
     if (piece < 0 || p.rows.size() > pieces[static_cast<size_t>(piece)].rows.size())
       piece = static_cast<int>(i);
   }
-  arm.armpit_z = below.z + 0.5 * c->step;
+  arm.armpit_z = c->slices[static_cast<size_t>(level)].z + 0.5 * c->step;
   double y = corner.y();
   if (piece >= 0) {
     // The hollow lies under the arm's middle: the trunk's side at the arm's centre y.

@@ -407,7 +407,8 @@ TEST(MakeHumanLandmarks, SameBodyScannedAgainKeepsItsPoints) {
   const Body body = GenerateMakeHumanBody(options, &model);
   std::map<std::string, std::vector<Eigen::Vector3d>> found;
   const std::vector<std::string> names = {"side_neck_right", "side_neck_left", "shoulder_right",
-                                          "shoulder_left", "front_waist"};
+                                          "shoulder_left",   "front_waist",    "armpit_left",
+                                          "armpit_right"};
   for (std::uint64_t scan_seed = 11; scan_seed <= 16; ++scan_seed) {
     testing::ScannedBodyOptions scan_options;
     scan_options.scan_seed = scan_seed;
