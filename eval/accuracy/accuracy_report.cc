@@ -73,12 +73,13 @@ void WriteLandmarkCsvs(const AccuracyReport& report, const fs::path& dir) {
   }
   WriteFileAtomically(dir / "landmarks.csv", summary.str());
   std::ostringstream each;
-  each << "subject,landmark,frame,error_mm,missing,truth_x_mm,truth_y_mm,truth_z_mm,"
+  each << "subject,landmark,frame,error_mm,height_only,missing,truth_x_mm,truth_y_mm,truth_z_mm,"
           "measured_x_mm,measured_y_mm,measured_z_mm\n";
   for (const SubjectComparison& s : report.subjects) {
     for (const LandmarkError& e : s.landmarks) {
       each << Cell(s.subject) << ',' << Cell(e.name) << ',' << s.landmark_frame << ','
-           << FormatNumber(e.error_mm) << ',' << (e.missing ? 1 : 0);
+           << FormatNumber(e.error_mm) << ',' << (e.height_only ? 1 : 0) << ','
+           << (e.missing ? 1 : 0);
       for (int k = 0; k < 3; ++k) each << ',' << FormatNumber(e.truth_mm[k]);
       for (int k = 0; k < 3; ++k) each << ',' << (e.missing ? "" : FormatNumber(e.measured_mm[k]));
       each << '\n';

@@ -200,6 +200,40 @@ TEST(CompareDocuments, LandmarksInTheScannerFrameIgnoreTheFramesError) {
   EXPECT_GT(body.landmarks[1].error_mm, 3);
 }
 
+// A point defined by a level (the calf: the level of the largest calf
+// girth) counts its height's error only, along the body's up axis, which a
+// y-up scanner frame turns onto its y; other points count the 3-D distance.
+TEST(CompareDocuments, ALevelsPointCountsItsHeightOnly) {
+  Eigen::Affine3d scanner_from_body = Eigen::Affine3d::Identity();
+  scanner_from_body.rotate(Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()));
+  scanner_from_body.pretranslate(Eigen::Vector3d(20, 900, -100));
+  const Eigen::Vector3d calf(100, -40, 350), knee(100, 60, 480), off(0, -20, -5);
+  const auto in_scanner = [&](const Eigen::Vector3d& p) {
+    return ToJson(Eigen::Vector3d(scanner_from_body * p));
+  };
+  const json truth = {
+      {"format", "bespoke-measurements"},
+      {"units", "mm"},
+      {"frame", "scanner"},
+      {"landmarks", {{"calf_right", in_scanner(calf)}, {"knee_right", in_scanner(knee)}}},
+      {"measurements", json::array()}};
+  const json measured = {
+      {"format", "bespoke-measurements"},
+      {"units", "mm"},
+      {"frame", "body"},
+      {"body_from_scanner", ToJson(Eigen::Affine3d(scanner_from_body.inverse()))},
+      {"landmarks",
+       {{"calf_right", ToJson(Eigen::Vector3d(calf + off))},
+        {"knee_right", ToJson(Eigen::Vector3d(knee + off))}}},
+      {"measurements", json::array()}};
+  const SubjectComparison c = CompareDocuments(measured, truth, "s1");
+  ASSERT_EQ(c.landmarks.size(), 2u);  // calf_right, knee_right
+  EXPECT_TRUE(c.landmarks[0].height_only);
+  EXPECT_NEAR(c.landmarks[0].error_mm, 5, 1e-9);
+  EXPECT_FALSE(c.landmarks[1].height_only);
+  EXPECT_NEAR(c.landmarks[1].error_mm, off.norm(), 1e-9);
+}
+
 TEST(CompareDocuments, RejectsOtherDocuments) {
   const Documents d = MakeDocuments(0);
   EXPECT_THROW(

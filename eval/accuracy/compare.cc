@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 
+#include "measure/catalogue/catalogue.h"
 #include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 #include "scanners/core/json_io.h"
@@ -101,6 +102,7 @@ SubjectComparison CompareDocuments(const json& measured, const json& truth,
   const bool measured_has_transform = measured.contains("body_from_scanner");
   std::map<std::string, Eigen::Vector3d> truth_points,
       measured_points = Points(measured, "landmarks", measured_what);
+  Eigen::Vector3d up = Eigen::Vector3d::UnitZ();  // the body's up axis in the compared frame
   if (truth_in_scanner && Frame(measured) == "scanner") {
     result.landmark_frame = "scanner";
     truth_points = Points(truth, "landmarks", truth_what);
@@ -111,6 +113,7 @@ SubjectComparison CompareDocuments(const json& measured, const json& truth,
         AffineFromJson(measured["body_from_scanner"], measured_what + ": body_from_scanner")
             .inverse();
     for (auto& [name, p] : measured_points) p = scanner_from_body * p;
+    up = (scanner_from_body.linear() * Eigen::Vector3d::UnitZ()).normalized();
   } else {
     result.landmark_frame = "body";
     truth_points = Points(truth, truth_in_scanner ? "landmarks_body" : "landmarks", truth_what);
@@ -125,7 +128,9 @@ SubjectComparison CompareDocuments(const json& measured, const json& truth,
       e.error_mm = kNaN;
     } else {
       e.measured_mm = it->second;
-      e.error_mm = (it->second - t).norm();
+      const Catalogue& catalogue = Catalogue::Builtin();
+      e.height_only = catalogue.HasLandmark(name) && catalogue.Landmark(name).level;
+      e.error_mm = e.height_only ? std::abs((it->second - t).dot(up)) : (it->second - t).norm();
     }
     result.landmarks.push_back(e);
   }

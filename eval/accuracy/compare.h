@@ -9,7 +9,10 @@
 // sides are kept.
 //
 // Landmarks: the error is the 3-D distance (mm) between the measured and
-// the true datum point, compared in one frame:
+// the true datum point; for a point the catalogue defines by a level alone
+// (LandmarkDef::level: calf, thigh) it is the distance along the body's up
+// axis, as that point's definition places it by its height only. Points
+// are compared in one frame:
 //   - "scanner": when the truth carries the scanner frame (the virtual
 //     scanner's truth: "frame": "scanner", landmarks in the scanner frame)
 //     and the measured document carries its "body_from_scanner" (the frame
@@ -48,6 +51,7 @@ struct LandmarkError {
   Eigen::Vector3d measured_mm = Eigen::Vector3d::Zero();  // in `frame`; zero when missing
   double error_mm = 0;                                    // NaN when missing
   bool missing = false;
+  bool height_only = false;  // a level's point: error_mm is the height difference
 };
 
 struct SubjectComparison {

@@ -74,6 +74,10 @@ LandmarkDef ParseLandmark(const json& entry, const std::string& where) {
   def.definition = RequiredString(entry, "definition", where);
   def.standard = RequiredString(entry, "standard", where);
   def.aliases = StringList(entry, "aliases", where);
+  if (entry.contains("level")) {
+    if (!entry["level"].is_boolean()) throw InputError(where + ": 'level' is not a boolean");
+    def.level = entry["level"].get<bool>();
+  }
   return def;
 }
 

@@ -25,6 +25,10 @@ struct LandmarkDef {
   std::string definition;            // in our words, after the standards cited
   std::string standard;              // e.g. "ISO 8559-1 (cervicale); EN 13402-1 (back neck point)"
   std::vector<std::string> aliases;  // "cervicale", "C7", ...
+  // Defined by a level alone (the height of a girth, e.g. the calf's largest
+  // girth; default false): its height is what places it, so its error is
+  // the height's.
+  bool level = false;
 };
 
 enum class MeasurementKind { kGirth, kLength, kHeight };

@@ -66,7 +66,9 @@ std::string Catalogue::ToMarkdown() const {
       const std::string right = l.name.substr(0, l.name.size() - 5) + "_right";
       if (HasLandmark(right)) names += ", " + Code(right);
     }
-    md << "| " << names << " | " << l.region << " | " << Cell(l.definition) << " | "
+    const std::string definition =
+        l.definition + (l.level ? " Defined by its level: its height is what counts." : "");
+    md << "| " << names << " | " << l.region << " | " << Cell(definition) << " | "
        << Cell(Join(l.aliases, ", ", false)) << " | " << Cell(l.standard) << " |\n";
   }
   md << "\n## Measurements\n\n"
