@@ -126,20 +126,25 @@ bool IsArm(ScanPart part) { return part == ScanPart::kArmRight || part == ScanPa
 // however close they lie, and all that is left is its section (`one_part`),
 // however the scan's holes cut it: the piece at a single datum point (under-
 // bust, middle hip) can be a sliver between two holes of a sparse scan
-// (a 9 mm middle hip girth at 60k points). Another girth with no datum point on an arm (a leg's)
-// leaves out the arms. Empty (nothing left out) without a structure or for an arm's girth.
+// (a 9 mm middle hip girth at 60k points). An arm's girth (a datum point on
+// an arm) keeps that arm's points only: an upper arm resting on the trunk
+// is one section with it. Another girth (a leg's) leaves out the arms.
+// Empty (nothing left out) without a structure.
 std::vector<bool> LeaveOut(const MeasurementDef& m, const PointCloud& cloud,
                            const std::vector<ScanPart>& parts, const Eigen::MatrixX3d& anchors,
                            bool* one_part) {
   *one_part = false;
   if (parts.size() != static_cast<std::size_t>(cloud.size()) || cloud.size() == 0) return {};
   const bool trunk = IsTrunkGirth(m);
+  std::vector<bool> out(parts.size());
   for (Eigen::Index a = 0; a < anchors.rows() && !trunk; ++a) {
     Eigen::Index nearest = 0;
     (cloud.points.rowwise() - anchors.row(a)).rowwise().squaredNorm().minCoeff(&nearest);
-    if (IsArm(parts[static_cast<std::size_t>(nearest)])) return {};
+    const ScanPart arm = parts[static_cast<std::size_t>(nearest)];
+    if (!IsArm(arm)) continue;
+    for (std::size_t i = 0; i < parts.size(); ++i) out[i] = parts[i] != arm;
+    return out;
   }
-  std::vector<bool> out(parts.size());
   for (std::size_t i = 0; i < parts.size(); ++i)
     out[i] = trunk ? parts[i] != ScanPart::kTrunk : IsArm(parts[i]);
   *one_part = trunk;

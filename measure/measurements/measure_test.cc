@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <map>
 
+#include "measure/landmarks/landmarks.h"
 #include "measure/measurements/measurement_document.h"
 #include "oracle/body/parametric_body.h"
 #include "oracle/scan_sim/scan_sim.h"
@@ -168,6 +169,64 @@ TEST(Measure, SingleDatumTrunkGirthSpansTheHolesOfItsSection) {
   ASSERT_GT(truth, 0);
   std::printf("middle hip girth with side holes %.1f mm, truth %.1f mm\n", m->value_mm, truth);
   EXPECT_NEAR(m->value_mm, truth, 9.0) << "mm";
+}
+
+// An upper arm resting on the trunk: a sheet of trunk points pressed
+// against the inside of the right upper arm (140 mm front to back, 80 mm
+// high round its girth plane) makes one section with the arm. The arm's girth
+// keeps the points of the arm's own part (the body structure's), so the
+// sheet never joins it; with every point the section's hull takes the
+// sheet in.
+TEST(Measure, ArmGirthKeepsTheArmsOwnPoints) {
+  const Fixture& f = Scanned();
+  LandmarkSet set = f.landmarks;
+  set.parts = FindBodyParts(f.clean.cloud);
+  ASSERT_EQ(set.parts.size(), static_cast<size_t>(f.clean.cloud.size()));
+  const MeasurementDef& def = Catalogue::Builtin().Measurement("upper_arm_girth");
+  const auto [point, normal] = GirthPlane(def, set);
+  double inner_x = 1e9, y_sum = 0;
+  int n = 0;
+  for (Eigen::Index i = 0; i < f.clean.cloud.size(); ++i) {
+    const Eigen::Vector3d p = f.clean.cloud.points.row(i).transpose();
+    if (set.parts[static_cast<size_t>(i)] != ScanPart::kArmRight ||
+        std::abs((p - point).dot(normal)) > 10)
+      continue;
+    inner_x = std::min(inner_x, p.x()), y_sum += p.y(), ++n;
+  }
+  ASSERT_GT(n, 20);
+  const double arm_y = y_sum / n;
+  PointCloud pressed = f.clean.cloud;
+  std::vector<Eigen::Vector3d> sheet;
+  for (double y = -70; y <= 70; y += 3)
+    for (double z = -40; z <= 40; z += 3) sheet.emplace_back(inner_x - 2, arm_y + y, point.z() + z);
+  const Eigen::Index old_rows = pressed.size();
+  pressed.points.conservativeResize(old_rows + static_cast<Eigen::Index>(sheet.size()), 3);
+  pressed.normals.conservativeResize(pressed.points.rows(), 3);
+  for (size_t k = 0; k < sheet.size(); ++k) {
+    pressed.points.row(old_rows + static_cast<Eigen::Index>(k)) = sheet[k].transpose();
+    pressed.normals.row(old_rows + static_cast<Eigen::Index>(k)) = Eigen::RowVector3d(1, 0, 0);
+  }
+  set.parts.resize(static_cast<size_t>(pressed.size()), ScanPart::kTrunk);
+  MeasureOptions only;
+  only.only = {"upper_arm_girth"};
+  double truth = 0;
+  for (const ReferenceMeasurement& r : f.truth.measurements)
+    if (r.name == "upper_arm_girth") truth = r.value_mm;
+  ASSERT_GT(truth, 0);
+  const MeasureResult with_parts = Measure(only, Catalogue::Builtin(), pressed, set);
+  LandmarkSet no_parts = set;
+  no_parts.parts.clear();
+  const MeasureResult every_point = Measure(only, Catalogue::Builtin(), pressed, no_parts);
+  const Measurement* kept = with_parts.Find("upper_arm_girth");
+  const Measurement* joined = every_point.Find("upper_arm_girth");
+  ASSERT_NE(kept, nullptr);
+  ASSERT_NE(joined, nullptr);
+  std::printf(
+      "upper arm girth, trunk pressed against it: %.1f mm with the arm's part, %.1f mm "
+      "with every point; truth %.1f mm\n",
+      kept->value_mm, joined->value_mm, truth);
+  EXPECT_NEAR(kept->value_mm, truth, 4.0) << "mm";
+  EXPECT_GT(joined->value_mm, truth + 20) << "the sheet joins a section of every point";
 }
 
 // The 95 % interval: at datum points known to 1 mm (overrides) it is the
