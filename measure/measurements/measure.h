@@ -66,8 +66,9 @@ struct MeasureOptions {
   double uncertain_confidence = 0.5;  // default 0.5: below it a landmark is "uncertain"
   int geodesic_threads = 2;           // default 2: threads for the geodesic lengths (each
                                       // beyond the first builds its own grid)
-  // default true: a girth with no datum point on an arm leaves out the points
-  // the body structure labels arm (the landmarks' parts, else found here)
+  // default true: from the body structure's parts (the landmarks' parts, else
+  // found here) a trunk girth keeps the trunk's points, an arm's girth that
+  // arm's, another girth leaves out the arms
   bool separate_arms = true;
   bool keep_geometry = true;      // default true: hull loops and paths for rendering
   std::vector<std::string> only;  // default empty = every catalogue measurement
