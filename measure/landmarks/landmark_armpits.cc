@@ -290,12 +290,18 @@ constexpr double kWideLinkMm = 12, kFineLinkMm = 7;
 
 // Near the apex the gap between arm and trunk narrows slowly, so pieces
 // linked within 12 mm join them 10-25 mm below it on a dense scan. From the
-// wide link's level `k`, the level rises while the pieces of a finer link
-// (`fine`: their trunk extents) still show the arm apart (Dropped) from a
-// trunk as wide as at `k` (within 15 mm of `side`): where the fine link
-// breaks the trunk's side off instead (a sparse part of the scan), the
-// trunk's piece narrows and the level stops.
-int RaiseWithFineLink(const std::vector<double>& fine, double side, int k, int top) {
+// wide link's level `k` (`wide`: the trunk extents at that link), the level
+// rises while the pieces of a finer link (`fine`: their trunk extents) still
+// show the arm apart (Dropped) from a trunk as wide as at `k` (within 15 mm).
+// The finer link is trusted only where it keeps the trunk's piece as the
+// wide link has it at `k` and the two slices below (extent within 1 mm): on
+// a sparser scan it breaks pieces off the trunk's side and off the folds
+// round the armpit, and would part the arm from the trunk above the apex.
+int RaiseWithFineLink(const std::vector<double>& wide, const std::vector<double>& fine, int k,
+                      int top) {
+  for (int s = std::max(0, k - 2); s <= k; ++s)
+    if (!(fine[static_cast<size_t>(s)] >= wide[static_cast<size_t>(s)] - 1)) return k;
+  const double side = wide[static_cast<size_t>(k)];
   for (int s = k + 1; s < top; ++s) {
     const double e = fine[static_cast<size_t>(s)];
     if (!Dropped(fine, s, top) || std::abs(e - side) > 15) break;
@@ -362,7 +368,7 @@ void FindArmpitFromStructure(Context* c, int sign) {
   // sparse parts (RaiseWithFineLink); the arm's and the trunk's pieces that
   // place the point across are the wide link's.
   const double fine_link = std::clamp(2 * c->index->SpacingQuantile(0.9), kFineLinkMm, kWideLinkMm);
-  const int level = RaiseWithFineLink(extents(fine_link), ext[static_cast<size_t>(k)], k, top);
+  const int level = RaiseWithFineLink(ext, extents(fine_link), k, top);
   const Slice& below = c->slices[static_cast<size_t>(k)];
   int central = -1;
   const auto pieces = TrunkAndArmPieces(*c, below, arm_part, kWideLinkMm, &central);
