@@ -139,7 +139,8 @@ std::string LandmarkTable(const AccuracyReport& report) {
   const std::string& frame = report.summary.landmark_frame;
   std::string html =
       "<h2>Landmarks</h2>\n<p>Error = 3-D distance (mm) between the found and the true datum "
-      "point, compared in the " +
+      "point (for a point defined by a level, calf and thigh, the height's difference), "
+      "compared in the " +
       XmlEscape(frame) + " frame" +
       (frame == "scanner" ? " (the found points mapped back through the cleaning's "
                             "body_from_scanner, so the body frame's own error is not counted)"

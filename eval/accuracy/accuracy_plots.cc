@@ -151,7 +151,7 @@ void BlandAltmanChart(const MeasurementSummary& m, const std::string& reference_
 
 void LandmarkChart(const std::vector<LandmarkSummary>& landmarks, const fs::path& file) {
   Chart chart;
-  chart.title = "Landmark errors (3-D distance to the true datum point)";
+  chart.title = "Landmark errors (3-D distance to the true datum point; levels: height)";
   chart.x_label = "landmark (number as in the table)";
   chart.y_label = "error (mm)";
   Series median{"median", {}, {}, Series::Style::kBars, kCi};

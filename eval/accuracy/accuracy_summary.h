@@ -1,6 +1,6 @@
 // The accuracy of many subjects at once: per measurement the error
 // statistics over the subjects (accuracy_stats.h) and the ISO 20685-1
-// verdict (iso_20685.h); per landmark the 3-D error statistics; and the
+// verdict (iso_20685.h); per landmark the error statistics (compare.h); and the
 // headline figures the report sets targets for (every measurement passes,
 // MAE of the large girths, median landmark error).
 //
@@ -39,7 +39,7 @@ struct MeasurementSummary {
 struct LandmarkSummary {
   std::string name;
   int n = 0, missing = 0;
-  double median_mm = 0, mean_mm = 0, max_mm = 0;  // of the 3-D error; NaN when n = 0
+  double median_mm = 0, mean_mm = 0, max_mm = 0;  // of the error (compare.h); NaN when n = 0
 };
 
 struct AccuracySummary {
