@@ -11,8 +11,10 @@
 // Landmarks: the error is the 3-D distance (mm) between the measured and
 // the true datum point; for a point the catalogue defines by a level alone
 // (LandmarkDef::level: calf, thigh) it is the distance along the body's up
-// axis, as that point's definition places it by its height only. Points
-// are compared in one frame:
+// axis (mapped through body_from_scanner; with both documents in the
+// scanner frame and no transform, the scanner's z), as that point's
+// definition places it by its height only. Points are compared in one
+// frame:
 //   - "scanner": when the truth carries the scanner frame (the virtual
 //     scanner's truth: "frame": "scanner", landmarks in the scanner frame)
 //     and the measured document carries its "body_from_scanner" (the frame
