@@ -285,7 +285,7 @@ std::vector<Piece> TrunkAndArmPieces(const Context& c, const Slice& s, Part arm_
   return out;
 }
 
-// Links of the armpit's pieces (mm).
+// The least links of the armpit's pieces (mm): the wide one, the fine one.
 constexpr double kWideLinkMm = 12, kFineLinkMm = 7;
 
 // Near the apex the gap between arm and trunk narrows slowly, so pieces
@@ -353,8 +353,14 @@ void FindArmpitFromStructure(Context* c, int sign) {
     }
     return ext;
   };
-  // Pieces linked within 12 mm keep a sparse scan's trunk in one piece.
-  const std::vector<double> ext = extents(kWideLinkMm);
+  // Pieces linked within 12 mm keep a dense scan's trunk in one piece; a
+  // sparser one needs three times the spacing of its sparse parts (the 90th
+  // percentile of the nearest-neighbour distance; 15 mm on a 60k-point
+  // scan, where 12 mm broke the trunk's sides off and the arm seemed to
+  // leave it far from the armpit). At most 18 mm.
+  const double q90 = c->index->SpacingQuantile(0.9);
+  const double wide_link = std::clamp(3 * q90, kWideLinkMm, 18.0);
+  const std::vector<double> ext = extents(wide_link);
   const int k =
       ArmLeavesTrunk(ext, bottom, top, [&](double e) { return e < sign * corner.x() + 60; });
   if (k < 0) {
@@ -367,11 +373,11 @@ void FindArmpitFromStructure(Context* c, int sign) {
   // The level rises with a finer link, twice the spacing of the scan's
   // sparse parts (RaiseWithFineLink); the arm's and the trunk's pieces that
   // place the point across are the wide link's.
-  const double fine_link = std::clamp(2 * c->index->SpacingQuantile(0.9), kFineLinkMm, kWideLinkMm);
+  const double fine_link = std::clamp(2 * q90, kFineLinkMm, kWideLinkMm);
   const int level = RaiseWithFineLink(ext, extents(fine_link), k, top);
   const Slice& below = c->slices[static_cast<size_t>(k)];
   int central = -1;
-  const auto pieces = TrunkAndArmPieces(*c, below, arm_part, kWideLinkMm, &central);
+  const auto pieces = TrunkAndArmPieces(*c, below, arm_part, wide_link, &central);
   const double side_x = ext[static_cast<size_t>(k)];
   // The arm's piece: the largest lateral piece within 250 mm of the trunk's side.
   int piece = -1;
