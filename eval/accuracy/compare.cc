@@ -118,6 +118,7 @@ SubjectComparison CompareDocuments(const json& measured, const json& truth,
     result.landmark_frame = "body";
     truth_points = Points(truth, truth_in_scanner ? "landmarks_body" : "landmarks", truth_what);
   }
+  const Catalogue& catalogue = Catalogue::Builtin();
   for (const auto& [name, t] : truth_points) {
     LandmarkError e;
     e.name = name;
@@ -128,7 +129,6 @@ SubjectComparison CompareDocuments(const json& measured, const json& truth,
       e.error_mm = kNaN;
     } else {
       e.measured_mm = it->second;
-      const Catalogue& catalogue = Catalogue::Builtin();
       e.height_only = catalogue.HasLandmark(name) && catalogue.Landmark(name).level;
       e.error_mm = e.height_only ? std::abs((it->second - t).dot(up)) : (it->second - t).norm();
     }

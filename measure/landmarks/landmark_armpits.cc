@@ -289,7 +289,7 @@ std::vector<Piece> TrunkAndArmPieces(const Context& c, const Slice& s, Part arm_
 constexpr double kWideLinkMm = 12, kFineLinkMm = 7;
 
 // Near the apex the gap between arm and trunk narrows slowly, so pieces
-// linked within 12 mm join them 10-25 mm below it on a dense scan. From the
+// linked within 12 mm join them below it on a dense scan. From the
 // wide link's level `k` (`wide`: the trunk extents at that link), the level
 // rises while the pieces of a finer link (`fine`: their trunk extents) still
 // show the arm apart (Dropped) from a trunk as wide as at `k` (within 15 mm).
@@ -318,8 +318,10 @@ int RaiseWithFineLink(const std::vector<double>& wide, const std::vector<double>
 // section shortens where the hand ends). Then as without the structure: an arm piece beside the
 // trunk (A-pose) puts the armpit on the trunk's side at the arm's centre;
 // none (T-pose), under the arm's underside. No drop: the arm touches the
-// trunk down its side; the corner is kept, flagged.
-void FindArmpitFromStructure(Context* c, int sign) {
+// trunk down its side; the corner is kept, flagged. The pieces' links scale
+// with `spacing_q90_mm`, the 90th percentile of the scan's nearest-neighbour
+// distance (mm); the level rises with the finer one (RaiseWithFineLink).
+void FindArmpitFromStructure(Context* c, int sign, double spacing_q90_mm) {
   const int side = sign > 0 ? 0 : 1;
   ArmInfo& arm = c->arm[side];
   const BodyStructure& b = c->structure;
@@ -354,12 +356,10 @@ void FindArmpitFromStructure(Context* c, int sign) {
     return ext;
   };
   // Pieces linked within 12 mm keep a dense scan's trunk in one piece; a
-  // sparser one needs three times the spacing of its sparse parts (the 90th
-  // percentile of the nearest-neighbour distance; 15 mm on a 60k-point
-  // scan, where 12 mm broke the trunk's sides off and the arm seemed to
-  // leave it far from the armpit). At most 18 mm.
-  const double q90 = c->index->SpacingQuantile(0.9);
-  const double wide_link = std::clamp(3 * q90, kWideLinkMm, 18.0);
+  // sparser one needs three times the spacing of its sparse parts (15 mm on
+  // a 60k-point scan, where 12 mm breaks the trunk's sides off and the arm
+  // seems to leave it far below the armpit). At most 18 mm.
+  const double wide_link = std::clamp(3 * spacing_q90_mm, kWideLinkMm, 18.0);
   const std::vector<double> ext = extents(wide_link);
   const int k =
       ArmLeavesTrunk(ext, bottom, top, [&](double e) { return e < sign * corner.x() + 60; });
@@ -373,7 +373,7 @@ void FindArmpitFromStructure(Context* c, int sign) {
   // The level rises with a finer link, twice the spacing of the scan's
   // sparse parts (RaiseWithFineLink); the arm's and the trunk's pieces that
   // place the point across are the wide link's.
-  const double fine_link = std::clamp(2 * q90, kFineLinkMm, kWideLinkMm);
+  const double fine_link = std::clamp(2 * spacing_q90_mm, kFineLinkMm, kWideLinkMm);
   const int level = RaiseWithFineLink(ext, extents(fine_link), k, top);
   const Slice& below = c->slices[static_cast<size_t>(k)];
   int central = -1;
@@ -418,9 +418,12 @@ void FindArmpitFromStructure(Context* c, int sign) {
 }  // namespace
 
 void FindArmpits(Context* c) {
+  // The spacing of the scan's sparse parts (90th percentile of the
+  // nearest-neighbour distance, mm) sets the armpit's links.
+  const double spacing_q90_mm = c->structure.ok ? c->index->SpacingQuantile(0.9) : 0;
   for (int sign : {+1, -1}) {
     if (c->structure.ok)
-      FindArmpitFromStructure(c, sign);
+      FindArmpitFromStructure(c, sign, spacing_q90_mm);
     else
       FindArmpit(c, sign);
   }

@@ -189,7 +189,6 @@ DefinedLevels PlaceDefinedLandmarks(const DefinedLandmarkOptions& options,
   if (lowest >= 0) Place(body, "crotch", mesh.vertices.row(lowest).transpose());
   // Calves: the largest leg girth between ankle and knee.
   for (const char* side : {"right", "left"}) {
-    if (!options.calves) break;
     const std::string s = side;
     const Eigen::Vector3d knee = At(*body, "knee_" + s), ankle = At(*body, "ankle_inside_" + s);
     const Eigen::Vector3d near = At(*body, "calf_" + s);

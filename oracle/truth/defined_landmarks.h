@@ -48,11 +48,6 @@ namespace bespoke {
 
 struct DefinedLandmarkOptions {
   double step_mm = 4;  // level search step, mm (refined to step_mm / 8); default 4; 0.5-20
-  // Place calf_* by definition (default true). False keeps the given calf
-  // points: a parametric leg's calf ring is its construction's bulge, and on
-  // a leg whose girth grows up to the knee the band's largest girth is its
-  // edge beside the knee, no calf.
-  bool calves = true;
   // Throws InputError when out of range.
   void Check() const;
 };
