@@ -43,9 +43,23 @@ Eigen::MatrixX3d HullPolygon(const SectionLoop& loop, const Vec& normal) {
   return polygon;
 }
 
+// Index of the loop with the longest hull perimeter, or -1 when none.
+int LargestLoop(const std::vector<SectionLoop>& loops, const Vec& normal) {
+  int largest = -1;
+  double best = 0;
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    const double perimeter = LoopHullPerimeter(loops[i], normal);
+    if (perimeter > best) best = perimeter, largest = static_cast<int>(i);
+  }
+  return largest;
+}
+
 // The loop of the body part measured: with one datum point the loop through
-// it; with several (a trunk girth) the loop enclosing their centroid, else
-// the one nearest the first.
+// it; with several (a trunk girth) the loop enclosing their centroid. When
+// no loop encloses it, a trunk girth takes the largest loop: breasts that
+// hang clear of the chest wall are cut as loops of their own, with the bust
+// points' centroid in the air between them, and the nearest loop would be
+// one breast. Otherwise the loop nearest the first datum point.
 int ChooseLoop(const std::vector<SectionLoop>& loops, const MeasurementDef& m, const Body& body,
                const Vec& normal) {
   int chosen = -1;
@@ -53,6 +67,7 @@ int ChooseLoop(const std::vector<SectionLoop>& loops, const MeasurementDef& m, c
     Vec centroid = Vec::Zero();
     for (const std::string& name : m.datum) centroid += Landmark(body, name);
     chosen = EnclosingLoop(loops, centroid / static_cast<double>(m.datum.size()), normal);
+    if (chosen < 0 && IsTrunkGirth(m)) chosen = LargestLoop(loops, normal);
   }
   return chosen >= 0 ? chosen : NearestLoop(loops, Landmark(body, m.datum[0]));
 }

@@ -5,7 +5,9 @@
 //   girth  (section_hull)  perimeter of the 2-D convex hull of the exact
 //          mesh-plane section loop of the body part measured: with one datum
 //          point the loop through (nearest) it, with several the loop that
-//          encloses their centroid (so the hip loop, not the hands beside it).
+//          encloses their centroid (so the hip loop, not the hands beside it);
+//          for a trunk girth whose centroid no loop encloses (breasts hanging
+//          clear of the chest, cut as loops of their own) the largest loop.
 //          The plane: horizontal at the mean height of the datum points; or
 //          through datum[0] perpendicular to axis[0] -> axis[1]; or through
 //          the three datum points (mesh_section.h). MeasurementDef::arms

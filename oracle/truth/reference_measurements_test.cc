@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "oracle/body/parametric_body.h"
 #include "oracle/truth/cropped_geodesics.h"
@@ -169,6 +170,55 @@ TEST(ReferenceMeasurements, FlagsSayWhatWentWrong) {
       base.landmarks.at("front_waist");
   EXPECT_TRUE(has(flags_of(body, "waist_girth"), "section_includes_arms"));
   EXPECT_TRUE(flags_of(base, "waist_girth").empty());
+}
+
+// Appends a closed box (outward faces) centred at `centre` with half-sizes `half` (mm).
+void AddBox(const Eigen::Vector3d& centre, const Eigen::Vector3d& half, TriangleMesh* mesh) {
+  const Eigen::Index base = mesh->num_vertices();
+  mesh->vertices.conservativeResize(base + 8, 3);
+  for (int i = 0; i < 8; ++i)
+    mesh->vertices.row(base + i) =
+        centre + Eigen::Vector3d((i & 1) ? half.x() : -half.x(), (i & 2) ? half.y() : -half.y(),
+                                 (i & 4) ? half.z() : -half.z());
+  const int faces[12][3] = {{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}, {0, 1, 5}, {0, 5, 4},
+                            {2, 6, 7}, {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
+  const Eigen::Index f0 = mesh->num_faces();
+  mesh->faces.conservativeResize(f0 + 12, 3);
+  for (int f = 0; f < 12; ++f)
+    for (int k = 0; k < 3; ++k) mesh->faces(f0 + f, k) = static_cast<int>(base) + faces[f][k];
+}
+
+TEST(ReferenceMeasurements, BreastsHangingClearOfTheChestCountInTheBust) {
+  // The bust girth alone: no geodesic has to cross between the body and the
+  // detached breasts.
+  nlohmann::json document = nlohmann::json::parse(BuiltinCatalogueJson());
+  nlohmann::json bust_only = nlohmann::json::array();
+  for (const nlohmann::json& m : document["measurements"])
+    if (m["name"] == "bust_girth") bust_only.push_back(m);
+  document["measurements"] = bust_only;
+  const Catalogue catalogue = Catalogue::FromJson(document, "bust girth only");
+  const Body base = GenerateParametricBody(Light(ParametricBodyOptions()));
+  const ReferenceOptions options;
+  const double plain =
+      Get(ComputeReferenceMeasurements(options, catalogue, base), "bust_girth").value_mm;
+  // Two breasts cut clear of the chest wall by the bust plane, 15 mm in
+  // front of it, with the bust points on their fronts: the points' centroid
+  // lies in the air between them, inside no loop.
+  Body body = base;
+  const Eigen::Vector3d bust = At(base, "bust_right");
+  const Eigen::Vector3d half(45, 30, 40);
+  for (const double side : {1.0, -1.0}) {
+    const Eigen::Vector3d centre(side * 90, bust.y() + 15 + half.y(), bust.z());
+    AddBox(centre, half, &body.mesh);
+    body.landmarks[side > 0 ? "bust_right" : "bust_left"] =
+        ClosestSurfacePoint(body.mesh, centre + Eigen::Vector3d(0, half.y(), 0));
+  }
+  const ReferenceMeasurement girth =
+      Get(ComputeReferenceMeasurements(options, catalogue, body), "bust_girth");
+  // The tape passes round the chest and over both breasts: longer than the
+  // plain chest, never one breast's 300 mm box.
+  EXPECT_GT(girth.value_mm, plain + 50);
+  EXPECT_TRUE(girth.flags.empty()) << girth.flags.front();
 }
 
 TEST(ReferenceMeasurements, OpenSectionsAndMissingLandmarks) {
