@@ -81,7 +81,7 @@ double DistanceToPoints(const Eigen::MatrixX3d& points, const Vec& x) {
 
 // The scan's noise and point spacing (mm), for uncertainty_mm.
 struct ScanQuality {
-  double noise_mm = 0, spacing_mm = 0;
+  double noise_mm = 0, spacing_mm = 0, surface_spacing_mm = 0;
 };
 
 double Sigma(const UncertaintyOptions& u, const LandmarkSet& set, const std::string& name) {
@@ -128,7 +128,8 @@ bool IsArm(ScanPart part) { return part == ScanPart::kArmRight || part == ScanPa
 // bust, middle hip) can be a sliver between two holes of a sparse scan
 // (a 9 mm middle hip girth at 60k points). An arm's girth (a datum point on
 // an arm) keeps that arm's points only: an upper arm resting on the trunk
-// is one section with it. Another girth (a leg's) leaves out the arms.
+// is one section with it. Another girth (a leg's) leaves out the arms, and
+// a leg's the other leg: thighs that touch are one section.
 // Empty (nothing left out) without a structure.
 std::vector<bool> LeaveOut(const MeasurementDef& m, const PointCloud& cloud,
                            const std::vector<ScanPart>& parts, const Eigen::MatrixX3d& anchors,
@@ -137,16 +138,19 @@ std::vector<bool> LeaveOut(const MeasurementDef& m, const PointCloud& cloud,
   if (parts.size() != static_cast<std::size_t>(cloud.size()) || cloud.size() == 0) return {};
   const bool trunk = IsTrunkGirth(m);
   std::vector<bool> out(parts.size());
+  ScanPart other_leg = ScanPart::kNone;
   for (Eigen::Index a = 0; a < anchors.rows() && !trunk; ++a) {
     Eigen::Index nearest = 0;
     (cloud.points.rowwise() - anchors.row(a)).rowwise().squaredNorm().minCoeff(&nearest);
-    const ScanPart arm = parts[static_cast<std::size_t>(nearest)];
-    if (!IsArm(arm)) continue;
-    for (std::size_t i = 0; i < parts.size(); ++i) out[i] = parts[i] != arm;
+    const ScanPart part = parts[static_cast<std::size_t>(nearest)];
+    if (part == ScanPart::kLegRight) other_leg = ScanPart::kLegLeft;
+    if (part == ScanPart::kLegLeft) other_leg = ScanPart::kLegRight;
+    if (!IsArm(part)) continue;
+    for (std::size_t i = 0; i < parts.size(); ++i) out[i] = parts[i] != part;
     return out;
   }
   for (std::size_t i = 0; i < parts.size(); ++i)
-    out[i] = trunk ? parts[i] != ScanPart::kTrunk : IsArm(parts[i]);
+    out[i] = trunk ? parts[i] != ScanPart::kTrunk : IsArm(parts[i]) || parts[i] == other_leg;
   *one_part = trunk;
   return out;
 }
@@ -426,8 +430,11 @@ MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue,
   ScanQuality scan;
   {
     const PointIndex index(body_cloud.points);
-    scan.noise_mm = ScanNoise(index, &scan.spacing_mm);
+    scan.noise_mm = ScanNoise(index, &scan.spacing_mm, &scan.surface_spacing_mm);
   }
+  // A sparse scan's girths take a wider slab (SlabForSpacing).
+  MeasureOptions girth_options = options;
+  girth_options.section = SlabForSpacing(options.section, scan.surface_spacing_mm);
   StageClock girth_clock("girths");
   // The body parts: the detector's, else (datum points from a file) found
   // here; none when separate_arms is off or the structure fails.
@@ -441,7 +448,7 @@ MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue,
   ProgressBegin(progress, "girths", n_girths);
   for (const MeasurementDef* m : todo) {
     if (m->method != MeasurementMethod::kSectionHull) continue;
-    attempt(*m, [&] { return Girth(options, *m, body_cloud, landmarks, parts, scan); });
+    attempt(*m, [&] { return Girth(girth_options, *m, body_cloud, landmarks, parts, scan); });
     ProgressUpdate(progress, ++girths);
   }
   ProgressEnd(progress);

@@ -115,6 +115,30 @@ double OwnAngularGapDeg(const std::vector<Vec2>& p) {
   return best * 360.0 / kBins;
 }
 
+// The centre to see the part's loop from: its centroid when the part goes
+// round (its own angular gap under 120 degrees); for an arc, the centroid
+// lies near the arc, so the centre of the circle fitted to it (algebraic
+// least squares: x^2 + y^2 + D x + E y + F = 0), unless the fit is
+// degenerate or its radius exceeds the arc's own extent (a flat piece).
+Vec2 LoopCentre(const std::vector<Vec2>& p) {
+  const Vec2 mean = Mean(p);
+  if (p.size() < 3 || OwnAngularGapDeg(p) < 120) return mean;
+  Eigen::MatrixX3d a(static_cast<Eigen::Index>(p.size()), 3);
+  Eigen::VectorXd b(static_cast<Eigen::Index>(p.size()));
+  double extent = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec2 d = p[i] - mean;  // centred for conditioning
+    a.row(static_cast<Eigen::Index>(i)) << d.x(), d.y(), 1;
+    b(static_cast<Eigen::Index>(i)) = -d.squaredNorm();
+    extent = std::max(extent, d.norm());
+  }
+  const Eigen::Vector3d def = a.colPivHouseholderQr().solve(b);
+  const Vec2 centre(-def(0) / 2, -def(1) / 2);
+  const double r2 = centre.squaredNorm() - def(2);
+  if (!centre.allFinite() || !(r2 > 0) || std::sqrt(r2) > 2 * extent) return mean;
+  return mean + centre;
+}
+
 // Angular occupancy of the part around `centre`: per bin, point count and mean radius.
 struct Occupancy {
   std::vector<int> count = std::vector<int>(kBins, 0);
@@ -219,6 +243,24 @@ void SectionGirthOptions::Check() const {
   if (!(max_slide_mm > 0)) throw InputError("section girth: max_slide_mm must be > 0");
   if (!(smooth_arc_mm >= 0)) throw InputError("section girth: smooth_arc_mm must be >= 0");
   if (min_piece_points < 1) throw InputError("section girth: min_piece_points must be >= 1");
+  if (!(points_per_gap >= 0)) throw InputError("section girth: points_per_gap must be >= 0");
+  if (!(gap_per_spacing >= 0)) throw InputError("section girth: gap_per_spacing must be >= 0");
+  if (!(max_half_thickness_mm >= half_thickness_mm && max_half_thickness_mm <= 50))
+    throw InputError("section girth: max_half_thickness_mm must be in [half_thickness_mm, 50]");
+}
+
+SectionGirthOptions SlabForSpacing(const SectionGirthOptions& options, double surface_spacing_mm) {
+  options.Check();
+  SectionGirthOptions out = options;
+  if (!(surface_spacing_mm > 0) || !std::isfinite(surface_spacing_mm)) return out;
+  out.piece_gap_mm = std::max(options.piece_gap_mm, options.gap_per_spacing * surface_spacing_mm);
+  out.bridge_gap_mm = std::max(options.bridge_gap_mm, out.piece_gap_mm);
+  const double needed =
+      options.points_per_gap * surface_spacing_mm * surface_spacing_mm / (2 * out.piece_gap_mm);
+  out.half_thickness_mm =
+      std::clamp(needed, options.half_thickness_mm, options.max_half_thickness_mm);
+  out.max_slide_mm = options.max_slide_mm * out.half_thickness_mm / options.half_thickness_mm;
+  return out;
 }
 
 SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen::MatrixX3d& cloud,
@@ -303,7 +345,7 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
   // Arcs of the same loop across scan holes.
   for (bool grew = !one_part; grew;) {
     grew = false;
-    const Vec2 centre = Mean(part);
+    const Vec2 centre = LoopCentre(part);
     const Occupancy occupancy = Occupy(part, centre);
     int pick = -1;
     double pick_distance = options.bridge_gap_mm;

@@ -52,7 +52,14 @@ struct SectionGirthOptions {
   double open_gap_mm = 30.0;  // default 30 mm: a longer gap between neighbours marks the loop open
   double smooth_arc_mm = 6.0;  // default 6 mm: angular bin width of the denoising mean (0 = off)
   int min_piece_points = 4;    // default 4: smaller pieces are noise (unless nothing else)
-  void Check() const;          // InputError when out of range
+  // default 4: SlabForSpacing widens the slab of a sparse scan until a
+  // piece gap holds this many points along the loop (0 = fixed slab)
+  double points_per_gap = 4;
+  // default 2.5: SlabForSpacing makes piece_gap_mm at least this many times
+  // the scan's surface spacing (0 = fixed gap)
+  double gap_per_spacing = 2.5;
+  double max_half_thickness_mm = 12;  // default 12 mm: the widest slab SlabForSpacing makes
+  void Check() const;                 // InputError when out of range
 };
 
 struct SectionGirth {
@@ -66,6 +73,18 @@ struct SectionGirth {
   bool open = false;             // largest_gap_mm > open_gap_mm
   bool anchor_enclosed = false;  // the seed was chosen by enclosing the anchors' centroid
 };
+
+// `options` with the slab widened for a sparse scan. A scan whose points each
+// cover a square of side `surface_spacing_mm` (s) puts 2 h / s^2 points per
+// mm of loop into a slab of half thickness h; fewer than points_per_gap
+// within the piece gap g break a limb's loop into pieces (a 29 mm knee girth
+// at 60k points with the 2.5 mm slab). Scanners sample in rows, so points
+// in a slab clump, and g grows with s too: g = max(piece_gap_mm,
+// gap_per_spacing * s); h = max(half_thickness_mm, points_per_gap * s^2 /
+// (2 g)), at most max_half_thickness_mm; max_slide_mm grows as h does (the
+// slide of a point on a surface across the plane is its offset). A dense
+// scan keeps `options`.
+SectionGirthOptions SlabForSpacing(const SectionGirthOptions& options, double surface_spacing_mm);
 
 SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen::MatrixX3d& cloud,
                                  const Eigen::MatrixX3d& normals,

@@ -235,6 +235,48 @@ TEST(SectionGirth, SmoothingRemovesTheNoiseBias) {
   EXPECT_LT(std::abs(denoised.girth_mm - truth), 3.0);  // mm
 }
 
+// A limb scanned sparsely: points at random on a cylinder, one per
+// spacing^2 of skin (no rows), with their normals in g_normals.
+std::vector<Eigen::Vector3d> SparseCylinder(double r_mm, double spacing_mm, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  const int n = static_cast<int>(2 * kPi * r_mm * 200 / (spacing_mm * spacing_mm));
+  std::vector<Eigen::Vector3d> cloud;
+  g_normals.clear();
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * kPi * u(rng);
+    cloud.emplace_back(r_mm * std::cos(t), r_mm * std::sin(t), 200 * u(rng));
+    g_normals.emplace_back(std::cos(t), std::sin(t), 0);
+  }
+  return cloud;
+}
+
+TEST(SectionGirth, SparseScanTakesAWiderSlab) {
+  const SectionGirthOptions defaults;
+  // A dense scan keeps the options; 6 mm spacing needs a 2.5 * 6 = 15 mm
+  // piece gap and a 4 * 36 / (2 * 15) = 4.8 mm slab.
+  const SectionGirthOptions dense = SlabForSpacing(defaults, 3);
+  EXPECT_EQ(dense.half_thickness_mm, defaults.half_thickness_mm);
+  EXPECT_EQ(dense.piece_gap_mm, defaults.piece_gap_mm);
+  const SectionGirthOptions wide = SlabForSpacing(defaults, 6);
+  EXPECT_NEAR(wide.piece_gap_mm, 15.0, 1e-9);
+  EXPECT_NEAR(wide.half_thickness_mm, 4.8, 1e-9);
+  EXPECT_NEAR(wide.max_slide_mm, defaults.max_slide_mm * 4.8 / 2.5, 1e-9);
+  EXPECT_EQ(SlabForSpacing(defaults, 30).half_thickness_mm, defaults.max_half_thickness_mm);
+  // A knee of 55 mm radius at 6 mm spacing, over ten scans: the 2.5 mm slab
+  // breaks its loop into pieces and keeps one; the wider slab holds the loop.
+  const double truth = 2 * kPi * 55;
+  double worst_fixed = 0, worst_wide = 0;
+  for (std::uint32_t seed = 1; seed <= 10; ++seed) {
+    const std::vector<Eigen::Vector3d> cloud = SparseCylinder(55, 6, seed);
+    const Eigen::RowVector3d anchor(55, 0, 100);
+    worst_fixed = std::max(worst_fixed, std::abs(Girth(cloud, anchor).girth_mm - truth));
+    worst_wide = std::max(worst_wide, std::abs(Girth(cloud, anchor, wide).girth_mm - truth));
+  }
+  EXPECT_GT(worst_fixed, 50.0);  // mm
+  EXPECT_LT(worst_wide, 4.0);    // mm
+}
+
 TEST(SectionGirth, EmptySlabAndBadOptions) {
   std::vector<Eigen::Vector3d> cloud;
   Sample(Circle(150), 4, All, 0, &cloud);

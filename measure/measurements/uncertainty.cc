@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "measure/catalogue/catalogue.h"
+#include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
@@ -53,17 +54,20 @@ double LandmarkSigma(const std::string& name, const Landmark& landmark, double s
   return scale * sigma;
 }
 
-double ScanNoise(const PointIndex& index, double* spacing_mm, int samples) {
+double ScanNoise(const PointIndex& index, double* spacing_mm, double* surface_spacing_mm,
+                 int samples) {
   *spacing_mm = index.MedianSpacing();
+  if (surface_spacing_mm) *surface_spacing_mm = 0;
   const Eigen::Index n = index.size();
   if (n < 32) return 0;
   const Eigen::Index step = std::max<Eigen::Index>(1, n / samples);
   std::vector<int> near;
-  std::vector<double> d2;
+  std::vector<double> d2, area_per_point;
   double sum = 0;
   int count = 0;
   for (Eigen::Index i = 0; i < n; i += step) {
     index.Knn(index.point(i), 16, &near, &d2);
+    area_per_point.push_back(kPi * d2.back() / 15);
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     for (int k : near) mean += index.point(k);
@@ -71,6 +75,11 @@ double ScanNoise(const PointIndex& index, double* spacing_mm, int samples) {
     for (int k : near) cov += (index.point(k) - mean) * (index.point(k) - mean).transpose();
     const double smallest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvalues()(0);
     sum += std::max(smallest, 0.0) / static_cast<double>(near.size()), ++count;
+  }
+  if (surface_spacing_mm && !area_per_point.empty()) {
+    auto middle = area_per_point.begin() + static_cast<std::ptrdiff_t>(area_per_point.size() / 2);
+    std::nth_element(area_per_point.begin(), middle, area_per_point.end());
+    *surface_spacing_mm = std::sqrt(*middle);
   }
   return count > 0 ? std::sqrt(sum / count) : 0;
 }

@@ -42,9 +42,14 @@ struct UncertaintyOptions {
 double LandmarkSigma(const std::string& name, const Landmark& landmark, double scale = 1);
 
 // The scan's range noise, mm: the RMS distance of up to `samples` evenly
-// spread points from the plane through their 16 nearest neighbours, and the
-// median point spacing (mm) in `spacing_mm`.
-double ScanNoise(const PointIndex& index, double* spacing_mm, int samples = 2000);
+// spread points from the plane through their 16 nearest neighbours; the
+// median point spacing (mm) in `spacing_mm`; and, when not null, in
+// `surface_spacing_mm` the side of the square of skin each point covers
+// (mm): sqrt(pi r^2 / 15), r the distance to the 15th neighbour, median over
+// the same points. Scanners sample in rows, so the nearest neighbour along a
+// row says little about the density; the disc round 15 neighbours spans rows.
+double ScanNoise(const PointIndex& index, double* spacing_mm, double* surface_spacing_mm = nullptr,
+                 int samples = 2000);
 
 // 1.96 * sqrt(landmark_sd^2 + scan_sd^2 + bridge_sd^2), where
 // scan_sd = noise_factor * noise + spacing_factor * spacing and bridge_sd =
