@@ -80,20 +80,29 @@ bool CrotchFromProfile(const Context& c, double level, Eigen::Vector3d* out) {
 // of x = 0 (trunk and legs) have normals turned sideways (mean |n_x| > 0.45:
 // the crease's walls face each other), or no point lies there in front.
 // Over the pubis and the belly the front faces forward or down (|n_x| small).
+// Fewer than three points within 6 mm widen the strip to 10, then 14 mm: a
+// sparse scan (60k points) has one or two there on the pubis as often as
+// not, which read as a hole, and the crotch climbed 50-90 mm. In a true
+// hole between touching thighs the wider strip meets the thighs' walls,
+// whose normals still face sideways.
 bool FrontIsCrease(const Context& c, double z) {
-  std::vector<int> rows;
+  std::vector<int> near;
   double middle = 0;
   for (int r : c.At(z).rows) {
     const Part p = c.PartOf(r);
     if (p == Part::kTrunk || p == Part::kLegRight || p == Part::kLegLeft) {
       middle += c.points(r, 1);
-      if (std::abs(c.points(r, 0)) < 6) rows.push_back(r);
+      if (std::abs(c.points(r, 0)) < 14) near.push_back(r);
     }
   }
   middle /= std::max<double>(1, static_cast<double>(c.At(z).rows.size()));
-  rows.erase(
-      std::remove_if(rows.begin(), rows.end(), [&](int r) { return c.points(r, 1) < middle; }),
-      rows.end());
+  std::vector<int> rows;
+  for (const double width : {6.0, 10.0, 14.0}) {
+    rows.clear();
+    for (int r : near)
+      if (std::abs(c.points(r, 0)) < width && c.points(r, 1) >= middle) rows.push_back(r);
+    if (rows.size() >= 3) break;
+  }
   if (rows.size() < 3) return true;
   std::partial_sort(rows.begin(), rows.begin() + 3, rows.end(),
                     [&](int a, int b) { return c.points(a, 1) > c.points(b, 1); });
