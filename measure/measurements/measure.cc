@@ -435,6 +435,8 @@ MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue,
   // A sparse scan's girths take a wider slab (SlabForSpacing).
   MeasureOptions girth_options = options;
   girth_options.section = SlabForSpacing(options.section, scan.surface_spacing_mm);
+  result.sampling = {scan.noise_mm, scan.spacing_mm, scan.surface_spacing_mm,
+                     girth_options.section.half_thickness_mm, girth_options.section.piece_gap_mm};
   StageClock girth_clock("girths");
   // The body parts: the detector's, else (datum points from a file) found
   // here; none when separate_arms is off or the structure fails.

@@ -104,9 +104,20 @@ struct MeasureStage {
   double cpu_s = 0;   // process CPU, all threads
 };
 
+// How densely the scan samples the skin, and the girth slab that follows
+// from it (SlabForSpacing, section_girth.h). mm.
+struct ScanSampling {
+  double noise_mm = 0;                // RMS distance of points from their local planes
+  double spacing_mm = 0;              // median nearest-neighbour distance
+  double surface_spacing_mm = 0;      // side of the square of skin per point
+  double slab_half_thickness_mm = 0;  // girth slab used
+  double piece_gap_mm = 0;            // girth piece gap used
+};
+
 struct MeasureResult {
   std::vector<Measurement> measurements;                     // catalogue order
   std::vector<std::pair<std::string, std::string>> skipped;  // name, reason
+  ScanSampling sampling;
   std::vector<MeasureStage> stages;
   double total_time_s = 0;
   const Measurement* Find(const std::string& name) const;  // nullptr when absent

@@ -75,6 +75,12 @@ nlohmann::json MeasurementDocument(const MeasureResult& result, const LandmarkSe
   for (const auto& [name, reason] : result.skipped)
     skipped.push_back({{"name", name}, {"reason", reason}});
   doc["skipped"] = std::move(skipped);
+  const ScanSampling& q = result.sampling;
+  doc["scan_sampling"] = {{"noise_mm", q.noise_mm},
+                          {"spacing_mm", q.spacing_mm},
+                          {"surface_spacing_mm", q.surface_spacing_mm},
+                          {"slab_half_thickness_mm", q.slab_half_thickness_mm},
+                          {"piece_gap_mm", q.piece_gap_mm}};
   nlohmann::json timings = nlohmann::json::array();
   if (extra.contains("timings") && extra["timings"].is_array()) timings = extra["timings"];
   for (const MeasureStage& s : result.stages)
