@@ -22,11 +22,16 @@ namespace {
 constexpr double kElbowShare = 0.49;
 constexpr double kStyloidPastNarrowest_mm = 15;
 // The shortest shoulder-to-arm's-end distance, as a share of stature, that
-// can hold a hand (shoulder to wrist is about 0.33).
-constexpr double kMinArmShare = 0.3;
-// Below this share of outward-facing normals at the arm's end, the end is
-// a cut, not a hand (EndCapShare).
+// can hold a hand (shoulder to wrist is about 0.33, to the fingertips about
+// 0.44; 0.3 rejected a complete T-posed arm of a heavy body whose shoulder
+// point sits out on the deltoid: 0.29). Shorter, the arm was cut by the
+// booth's view above the wrist whatever its end looks like.
+constexpr double kMinArmShare = 0.25;
+// Below this share of outward-facing normals at the arm's end, the end may
+// be a cut, not a hand (EndCapShare)...
 constexpr double kMinEndCapShare = 0.05;
+// ...unless the arm is a flat hand there (EndFlatness at least this).
+constexpr double kMinHandFlatness = 2.0;
 
 struct ArmFrame {
   Eigen::Vector3d origin,
@@ -91,6 +96,32 @@ double EndCapShare(const Context& c, const ArmFrame& f) {
   return end > 0 ? static_cast<double>(out) / end : 0;
 }
 
+// How flat the arm is 40-100 mm before its end: the larger over the smaller
+// SD of its points across the axis. A hand is a flat palm there (2.5-3.6
+// measured on complete T-pose and A-pose arms of MakeHuman bodies); a forearm
+// cut off by the edge of the booth's view is round (1.3). A flat hand's
+// fingertips, seen from above and below, have no normal along the arm, so
+// the cap alone called complete arms cut (4 of 40 T-poses in the
+// completeness set). 0 with fewer than 10 points there.
+double EndFlatness(const Context& c, const ArmFrame& f) {
+  std::vector<Eigen::Vector3d> across;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (size_t i = 0; i < f.rows.size(); ++i) {
+    const double from_end = f.length - f.t[i];
+    if (from_end < 40 || from_end >= 100) continue;
+    const Eigen::Vector3d p = c.P(f.rows[i]) - f.origin;
+    across.push_back(p - p.dot(f.axis) * f.axis);
+    mean += across.back();
+  }
+  if (across.size() < 10) return 0;
+  mean /= static_cast<double>(across.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3d& p : across) cov += (p - mean) * (p - mean).transpose();
+  // Across the axis the covariance has rank 2: eigenvalues 0, small, large.
+  const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvalues();
+  return ev(1) > 0 ? std::sqrt(ev(2) / ev(1)) : 0;
+}
+
 // The row in the slab |t - t0| < half most extreme along `direction`
 // (noise averaged); -1 when the slab is empty.
 int BestInSlab(const Context& c, const ArmFrame& f, double t0, double half,
@@ -117,7 +148,8 @@ void FindArm(Context* c, int sign) {
   std::vector<std::string> flags;
   double confidence = 0.75;
   const double cap = EndCapShare(*c, f);
-  if (f.length < kMinArmShare * c->crown_z || cap < kMinEndCapShare) {
+  if (f.length < kMinArmShare * c->crown_z ||
+      (cap < kMinEndCapShare && EndFlatness(*c, f) < kMinHandFlatness)) {
     // The hand is not in the scan (out of the booth's view, or merged with
     // the thigh): its end is no reference for the wrist.
     for (const char* n : {"upper_arm", "elbow", "wrist"}) {

@@ -323,6 +323,33 @@ TEST(MakeHumanLandmarks, SparseScanKeepsTheCrotch) {
   }
 }
 
+// T-posed MakeHuman bodies of the full range on the 120k booth (141 x 105
+// px): the hands are in the scan and every arm point must be found. Seed
+// 1206's flat hand has no normal along the arm at its fingertips (the cap
+// alone called the arm cut); seed 1207's shoulder point sits out on a heavy
+// deltoid, 0.29 of stature from the fingertips.
+TEST(MakeHumanLandmarks, TPosedHandsAreInTheScan) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(shared / "data/bodies/makehuman");
+  for (std::uint64_t seed : {1206, 1207}) {
+    MakeHumanBodyOptions options;
+    options.seed = seed;
+    options.population = "full";
+    options.posture = ParseMakeHumanPosture("arms-90");
+    testing::ScannedBodyOptions scan_options;
+    scan_options.scan_seed = seed;
+    scan_options.width_px = 141;
+    scan_options.height_px = 105;
+    const LandmarkSet set = DetectLandmarks(
+        LandmarkOptions{},
+        testing::ScanAndClean(scan_options, GenerateMakeHumanBody(options, &model)).cloud);
+    for (const char* name : {"upper_arm_right", "upper_arm_left", "elbow_right", "elbow_left",
+                             "wrist_right", "wrist_left"})
+      EXPECT_TRUE(set.Has(name)) << seed << " " << name << ": "
+                                 << (set.missing.count(name) ? set.missing.at(name) : "");
+  }
+}
+
 // MakeHuman bodies (../shared): every catalogue landmark checked.
 const std::vector<Tolerance> kMakeHuman = {
     {"crown", 15},      {"crotch", 80},     {"back_neck", 25},   {"front_neck", 25},
