@@ -13,6 +13,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include "scanners/core/types.h"
 
@@ -32,11 +33,19 @@ Eigen::Vector3d PositionOf(const TriangleMesh& mesh, const SurfacePoint& point);
 // O(#F); for a few dozen landmarks this is fine).
 SurfacePoint ClosestSurfacePoint(const TriangleMesh& mesh, const Eigen::Vector3d& position);
 
+// The limb a mesh vertex belongs to (Body::limbs).
+enum class BodyLimb : signed char { kTrunk = 0, kArmRight, kArmLeft, kLegRight, kLegLeft };
+
 struct Body {
   std::string model;                              // "parametric" or "makehuman"
   TriangleMesh mesh;                              // body frame, mm, closed and watertight
   std::map<std::string, SurfacePoint> landmarks;  // datum points, by catalogue name
   std::map<std::string, double> parameters;       // what generated it, e.g. "height_mm", "seed"
+  // Per mesh vertex (#V), its limb, from the model's skeleton (MakeHuman: the
+  // bones holding most of its skin weight); empty when the model has none.
+  // A limb girth's truth is cut on its limb's own surface where the posed
+  // limb passes into the trunk or the other leg (reference_measurements.h).
+  std::vector<BodyLimb> limbs;
 };
 
 }  // namespace bespoke

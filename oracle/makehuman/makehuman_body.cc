@@ -265,6 +265,7 @@ Body GenerateMakeHumanBody(const MakeHumanBodyOptions& options, MakeHumanModel* 
     pose = PoseMakeHumanSkin(rig, body.mesh, joints, options.posture);
     body.mesh.vertices = pose.vertices;
   }
+  body.limbs = RigLimbs(model->Rig());
   body.landmarks = MakeHumanLandmarkPoints(body.mesh);
   PlaceOnFloorBetweenAnkles(&body);
   body.landmarks["crown"] = HighestVertex(body.mesh);

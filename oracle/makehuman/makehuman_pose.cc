@@ -98,6 +98,38 @@ int MakeHumanRig::BoneIndex(const std::string& name) const {
   throw InputError("makehuman rig: no bone '" + name + "'");
 }
 
+namespace {
+
+// The limb of a bone by its name (e.g. "lowerarm02.R"); kTrunk for others.
+BodyLimb LimbOfBone(const std::string& name) {
+  const bool right = name.size() > 2 && name.compare(name.size() - 2, 2, ".R") == 0;
+  const bool left = name.size() > 2 && name.compare(name.size() - 2, 2, ".L") == 0;
+  if (!right && !left) return BodyLimb::kTrunk;
+  const auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
+  if (starts("upperarm") || starts("lowerarm") || starts("wrist") || starts("metacarpal") ||
+      starts("finger"))
+    return right ? BodyLimb::kArmRight : BodyLimb::kArmLeft;
+  if (starts("upperleg") || starts("lowerleg") || starts("foot") || starts("toe"))
+    return right ? BodyLimb::kLegRight : BodyLimb::kLegLeft;
+  return BodyLimb::kTrunk;
+}
+
+}  // namespace
+
+std::vector<BodyLimb> RigLimbs(const MakeHumanRig& rig) {
+  std::vector<BodyLimb> bone_limb;
+  for (const MakeHumanRig::Bone& bone : rig.bones) bone_limb.push_back(LimbOfBone(bone.name));
+  std::vector<BodyLimb> limbs(rig.weights.size(), BodyLimb::kTrunk);
+  for (std::size_t v = 0; v < rig.weights.size(); ++v) {
+    double share[5] = {0, 0, 0, 0, 0};
+    for (const auto& [bone, w] : rig.weights[v])
+      share[static_cast<int>(bone_limb[static_cast<std::size_t>(bone)])] += w;
+    for (int limb = 1; limb < 5; ++limb)
+      if (share[limb] > 0.5) limbs[v] = static_cast<BodyLimb>(limb);
+  }
+  return limbs;
+}
+
 MakeHumanRig LoadMakeHumanRig(const std::filesystem::path& rig_dir, const MakeHumanModel& model) {
   const std::filesystem::path skel_file = rig_dir / "default.mhskel";
   const std::filesystem::path weights_file = rig_dir / "default_weights.mhw";

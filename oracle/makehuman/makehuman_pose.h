@@ -41,6 +41,7 @@
 #include <utility>
 #include <vector>
 
+#include "oracle/body/body.h"
 #include "scanners/core/types.h"
 
 namespace bespoke {
@@ -64,6 +65,12 @@ struct MakeHumanRig {
 // Reads default.mhskel and default_weights.mhw from `rig_dir` for `model`'s
 // skin. InputError naming the file when missing or malformed.
 MakeHumanRig LoadMakeHumanRig(const std::filesystem::path& rig_dir, const MakeHumanModel& model);
+
+// Per skin vertex (MakeHumanModel::base_body() rows), its limb: the limb
+// whose bones (upper arm to fingers; upper leg to toes; ".R" the person's
+// right, +x) hold more than half of its skin weight; otherwise the trunk
+// (the shoulder and pelvis bones are the trunk's).
+std::vector<BodyLimb> RigLimbs(const MakeHumanRig& rig);
 
 // Joint positions: the mean of each joint's vertices in `all_vertices`
 // (#base.obj vertices x 3, any frame and unit; MakeHumanModel::MorphAll).

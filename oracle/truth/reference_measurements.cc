@@ -83,6 +83,41 @@ bool ReachesPastDatum(const SectionLoop& loop, const MeasurementDef& m, const Bo
   return loop.points.col(0).maxCoeff() > hi + 30 || loop.points.col(0).minCoeff() < lo - 30;
 }
 
+// The section of a right-side limb girth on its limb's own faces (those
+// whose three vertices are that limb's, Body::limbs): every loop of it
+// within 100 mm of the datum point, merged. A posed limb that passes into
+// the trunk or the other leg makes one loop with it on the whole mesh; its
+// own surface still goes round it. False without limb labels, or when the
+// datum point's vertex is the trunk's or no loop is near.
+bool LimbSection(const MeasurementDef& m, const Body& body, const Vec& point, const Vec& normal,
+                 SectionLoop* out) {
+  if (body.limbs.size() != static_cast<std::size_t>(body.mesh.num_vertices())) return false;
+  const Vec datum = Landmark(body, m.datum[0]);
+  Eigen::Index nearest = 0;
+  (body.mesh.vertices.rowwise() - datum.transpose()).rowwise().squaredNorm().minCoeff(&nearest);
+  const BodyLimb limb = body.limbs[static_cast<std::size_t>(nearest)];
+  if (limb == BodyLimb::kTrunk) return false;
+  TriangleMesh own;
+  own.vertices = body.mesh.vertices;
+  std::vector<Eigen::Index> kept;
+  for (Eigen::Index f = 0; f < body.mesh.num_faces(); ++f) {
+    bool all = true;
+    for (int k = 0; k < 3; ++k)
+      all = all && body.limbs[static_cast<std::size_t>(body.mesh.faces(f, k))] == limb;
+    if (all) kept.push_back(f);
+  }
+  own.faces.resize(static_cast<Eigen::Index>(kept.size()), 3);
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    own.faces.row(static_cast<Eigen::Index>(i)) = body.mesh.faces.row(kept[i]);
+  const std::vector<SectionLoop> loops = SectionLoops(own, point, normal);
+  std::vector<int> near;
+  for (std::size_t i = 0; i < loops.size(); ++i)
+    if (DistanceToLoop(loops[i], datum) < 100) near.push_back(static_cast<int>(i));
+  if (near.empty()) return false;
+  *out = MergedLoops(loops, near);
+  return true;
+}
+
 ReferenceMeasurement Girth(const ReferenceOptions& options, const MeasurementDef& m,
                            const Body& body) {
   ReferenceMeasurement out{m.name, m.kind, 0, {}, {}};
@@ -102,13 +137,21 @@ ReferenceMeasurement Girth(const ReferenceOptions& options, const MeasurementDef
   // apart in front of or behind it (a heavy breast hanging over the chest).
   const bool trunk = IsTrunkGirth(m);
   const std::vector<int> parts = trunk ? TrunkLoopIndices(loops, chosen) : std::vector<int>{chosen};
-  const SectionLoop loop = MergedLoops(loops, parts);
-  out.value_mm = LoopHullPerimeter(loop, normal);
-  if (!loop.closed) out.flags.push_back("section_open");
+  SectionLoop loop = MergedLoops(loops, parts);
   double datum_distance = std::numeric_limits<double>::infinity();
   for (int i : parts)
     datum_distance = std::min(datum_distance, DistanceToLoop(loops[static_cast<std::size_t>(i)],
                                                              Landmark(body, m.datum[0])));
+  if (m.side == "right" && loop.points.col(0).minCoeff() <= 0 &&
+      LimbSection(m, body, point, normal, &loop)) {
+    out.flags.push_back("section_limb_only");
+    datum_distance = (loop.points.rowwise() - Landmark(body, m.datum[0]).transpose())
+                         .rowwise()
+                         .norm()
+                         .minCoeff();
+  }
+  out.value_mm = LoopHullPerimeter(loop, normal);
+  if (!loop.closed) out.flags.push_back("section_open");
   if (datum_distance > options.datum_tolerance_mm) out.flags.push_back("datum_off_section");
   if (!m.arms.empty() && ReachesPastDatum(loop, m, body))
     out.flags.push_back("section_includes_arms");

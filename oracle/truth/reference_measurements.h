@@ -27,6 +27,10 @@
 //                            datum_tolerance_mm from the chosen loop
 //   "section_crosses_midline" a right-side limb girth whose loop reaches
 //                            x <= 0 (thighs touching, arm against the trunk)
+//   "section_limb_only"      such a loop, with limb labels (Body::limbs),
+//                            replaced by the section of the limb's own faces:
+//                            a posed limb passing into the trunk or the other
+//                            leg (its loops within 100 mm of the datum point)
 //   "section_includes_arms"  a trunk girth (arms "check"/"lower") whose loop
 //                            reaches > 30 mm beyond its lateral datum points
 // Failure: InputError for an invalid mesh (ExactGeodesics' checks) or bad
