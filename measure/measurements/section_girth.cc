@@ -342,10 +342,10 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
     part.insert(part.end(), pieces[k].begin(), pieces[k].end());
     ++out.pieces_joined;
   }
-  // Arcs of the same loop across scan holes.
-  for (bool grew = !one_part; grew;) {
-    grew = false;
-    const Vec2 centre = LoopCentre(part);
+  // Arcs of the same loop across scan holes: the nearest piece that
+  // continues the part's loop seen from its centroid, else, when the part is
+  // itself an arc, from the centre of the circle fitted to it.
+  auto pick_arc = [&](const Vec2& centre) {
     const Occupancy occupancy = Occupy(part, centre);
     int pick = -1;
     double pick_distance = options.bridge_gap_mm;
@@ -357,6 +357,13 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
       if (!ContinuesLoop(options, pieces[k], occupancy, centre)) continue;
       pick = static_cast<int>(k), pick_distance = d;
     }
+    return pick;
+  };
+  for (bool grew = !one_part; grew;) {
+    grew = false;
+    const Vec2 mean = Mean(part), fitted = LoopCentre(part);
+    int pick = pick_arc(mean);
+    if (pick < 0 && fitted != mean) pick = pick_arc(fitted);
     if (pick >= 0) {
       taken[static_cast<std::size_t>(pick)] = true;
       part.insert(part.end(), pieces[static_cast<std::size_t>(pick)].begin(),
