@@ -205,13 +205,19 @@ void FindNeckAndShoulders(Context* c) {
   // Jugulare: the most backward front centre-line point between the
   // armpits and the narrowest neck (the notch above the breastbone, where
   // the chest's front turns up into the throat).
-  double best_y = kInf, best_z = -1;
+  // Its height is the vertex of the profile's parabola round the most
+  // backward slice (ProfileExtreme): the slices are 5 mm apart, and the
+  // notch's bottom is flat enough for the noise to pick any of them.
+  std::vector<double> zs, ys;
   for (double z = armpit_z + 40; z <= neck.z; z += c->step) {
     Eigen::Vector3d p;
-    if (SeamPoint(*c, z, true, &p) && p.y() < best_y) best_y = p.y(), best_z = z;
+    zs.push_back(z);
+    ys.push_back(SeamPoint(*c, z, true, &p) ? p.y() : kNaN);
   }
-  if (best_z > 0)
-    PutSeam(c, "front_neck", best_z, true, 0.6, "front_profile_notch");
+  const size_t best = BestSample(ProfileExtremeOptions{}, ys, std::vector<bool>(ys.size(), true));
+  if (best < ys.size())
+    PutSeam(c, "front_neck", ProfileExtreme(ProfileExtremeOptions{}, zs, ys, best), true, 0.6,
+            "front_profile_notch");
   else
     c->Missing("front_neck", "no front centre-line points below the neck");
   for (int sign : {+1, -1}) {
