@@ -293,6 +293,22 @@ TEST(ParametricLandmarks, SparseScanKeepsBothArms) {
   }
 }
 
+// A MakeHuman body of the full population in `posture`, scanned (scanner
+// seed = body seed; `width_px` x `height_px` per sensor, 0: the default
+// booth's) and cleaned into the body frame, with its truth.
+testing::ScannedBody ScannedFullMakeHuman(MakeHumanModel* model, std::uint64_t seed,
+                                          const char* posture, int width_px = 0,
+                                          int height_px = 0) {
+  MakeHumanBodyOptions options;
+  options.seed = seed;
+  options.population = "full";
+  options.posture = ParseMakeHumanPosture(posture);
+  testing::ScannedBodyOptions scan_options;
+  scan_options.scan_seed = seed;
+  if (width_px > 0) scan_options.width_px = width_px, scan_options.height_px = height_px;
+  return testing::ScanAndClean(scan_options, GenerateMakeHumanBody(options, model));
+}
+
 // Sparse scans of MakeHuman bodies over the full range (the 60k booth: 99 x
 // 75 px per sensor). On the pubis a strip 6 mm either side of x = 0 then
 // holds fewer than three points as often as not, which read as the crease
@@ -304,16 +320,7 @@ TEST(MakeHumanLandmarks, SparseScanKeepsTheCrotch) {
   BESPOKE_REQUIRE_SHARED(shared);
   MakeHumanModel model(shared / "data/bodies/makehuman");
   for (std::uint64_t seed : {1019, 1025, 1027, 1035, 1038}) {
-    MakeHumanBodyOptions options;
-    options.seed = seed;
-    options.population = "full";
-    options.posture = ParseMakeHumanPosture("arms-30");
-    testing::ScannedBodyOptions scan_options;
-    scan_options.scan_seed = seed;
-    scan_options.width_px = 99;
-    scan_options.height_px = 75;
-    const testing::ScannedBody scan =
-        testing::ScanAndClean(scan_options, GenerateMakeHumanBody(options, &model));
+    const testing::ScannedBody scan = ScannedFullMakeHuman(&model, seed, "arms-30", 99, 75);
     const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
     ASSERT_TRUE(set.Has("crotch")) << seed;
     const double dz = set.At("crotch").position_mm.z() - scan.truth.at("crotch").z();
@@ -330,16 +337,7 @@ TEST(MakeHumanLandmarks, SparseScanKeepsTheCrotch) {
 TEST(MakeHumanLandmarks, SparseScanFindsTheBackOfTheHip) {
   BESPOKE_REQUIRE_SHARED(shared);
   MakeHumanModel model(shared / "data/bodies/makehuman");
-  MakeHumanBodyOptions options;
-  options.seed = 1066;
-  options.population = "full";
-  options.posture = ParseMakeHumanPosture("arms-30");
-  testing::ScannedBodyOptions scan_options;
-  scan_options.scan_seed = 1066;
-  scan_options.width_px = 99;
-  scan_options.height_px = 75;
-  const testing::ScannedBody scan =
-      testing::ScanAndClean(scan_options, GenerateMakeHumanBody(options, &model));
+  const testing::ScannedBody scan = ScannedFullMakeHuman(&model, 1066, "arms-30", 99, 75);
   const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
   ASSERT_TRUE(set.Has("hip_back")) << set.missing.at("hip_back");
   const double dz = set.At("hip_back").position_mm.z() - scan.truth.at("hip_back").z();
@@ -357,17 +355,8 @@ TEST(MakeHumanLandmarks, TPosedHandsAreInTheScan) {
   BESPOKE_REQUIRE_SHARED(shared);
   MakeHumanModel model(shared / "data/bodies/makehuman");
   for (std::uint64_t seed : {1206, 1207}) {
-    MakeHumanBodyOptions options;
-    options.seed = seed;
-    options.population = "full";
-    options.posture = ParseMakeHumanPosture("arms-90");
-    testing::ScannedBodyOptions scan_options;
-    scan_options.scan_seed = seed;
-    scan_options.width_px = 141;
-    scan_options.height_px = 105;
     const LandmarkSet set = DetectLandmarks(
-        LandmarkOptions{},
-        testing::ScanAndClean(scan_options, GenerateMakeHumanBody(options, &model)).cloud);
+        LandmarkOptions{}, ScannedFullMakeHuman(&model, seed, "arms-90", 141, 105).cloud);
     for (const char* name : {"upper_arm_right", "upper_arm_left", "elbow_right", "elbow_left",
                              "wrist_right", "wrist_left"})
       EXPECT_TRUE(set.Has(name)) << seed << " " << name << ": "
@@ -419,14 +408,7 @@ TEST(MakeHumanLandmarks, WithinToleranceOfTheTruth) {
 TEST(MakeHumanLandmarks, UpperArmsRestingOnAHeavyTrunkAreTheArms) {
   BESPOKE_REQUIRE_SHARED(shared);
   MakeHumanModel model(shared / "data/bodies/makehuman");
-  MakeHumanBodyOptions options;
-  options.seed = 1007;
-  options.population = "full";
-  options.posture = ParseMakeHumanPosture("arms-30");
-  const Body body = GenerateMakeHumanBody(options, &model);
-  testing::ScannedBodyOptions scan_options;
-  scan_options.scan_seed = 1007;
-  const testing::ScannedBody scan = testing::ScanAndClean(scan_options, body);
+  const testing::ScannedBody scan = ScannedFullMakeHuman(&model, 1007, "arms-30");
   const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
   const double bust_z = scan.truth.at("bust_right").z();
   for (const char* name : {"armpit_right", "armpit_left"}) {
@@ -455,14 +437,7 @@ TEST(MakeHumanLandmarks, BustPointOverABellyAndUnderALowArmpit) {
   for (const auto& [seed, method, tolerance_mm] :
        {std::tuple{1006, "breast_front_max", 15.0},
         std::tuple{1028, "proportion_above_belly", 40.0}}) {
-    MakeHumanBodyOptions options;
-    options.seed = seed;
-    options.population = "full";
-    options.posture = ParseMakeHumanPosture("arms-30");
-    testing::ScannedBodyOptions scan_options;
-    scan_options.scan_seed = seed;
-    const testing::ScannedBody scan =
-        testing::ScanAndClean(scan_options, GenerateMakeHumanBody(options, &model));
+    const testing::ScannedBody scan = ScannedFullMakeHuman(&model, seed, "arms-30");
     const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
     ASSERT_TRUE(set.Has("bust_right")) << seed;
     EXPECT_EQ(set.At("bust_right").method, method) << seed;
