@@ -79,11 +79,6 @@ double DistanceToPoints(const Eigen::MatrixX3d& points, const Vec& x) {
   return std::sqrt((points.rowwise() - x.transpose()).rowwise().squaredNorm().minCoeff());
 }
 
-// The scan's noise and point spacing (mm), for uncertainty_mm.
-struct ScanQuality {
-  double noise_mm = 0, spacing_mm = 0, surface_spacing_mm = 0;
-};
-
 double Sigma(const UncertaintyOptions& u, const LandmarkSet& set, const std::string& name) {
   return LandmarkSigma(name, set.points.at(name), u.scale);
 }
@@ -157,7 +152,7 @@ std::vector<bool> LeaveOut(const MeasurementDef& m, const PointCloud& cloud,
 
 Measurement Girth(const MeasureOptions& o, const MeasurementDef& m, const PointCloud& cloud,
                   const LandmarkSet& set, const std::vector<ScanPart>& parts,
-                  const ScanQuality& scan) {
+                  const ScanSampling& scan) {
   Measurement out = Start(m);
   auto [point, normal] = GirthPlane(m, set);
   Eigen::MatrixX3d anchors(static_cast<Eigen::Index>(m.datum.size()), 3);
@@ -250,7 +245,7 @@ double ChainSd(const MeasureOptions& o, const MeasurementDef& m, const LandmarkS
 }
 
 Measurement Length(const MeasureOptions& o, const MeasurementDef& m, const LandmarkSet& set,
-                   const GeodesicPaths& paths, const PointIndex* index, const ScanQuality& scan) {
+                   const GeodesicPaths& paths, const PointIndex* index, const ScanSampling& scan) {
   Measurement out = Start(m);
   double sd = 0;
   const Vec a = Position(set, m.datum[0]);
@@ -304,7 +299,7 @@ Measurement Length(const MeasureOptions& o, const MeasurementDef& m, const Landm
 }
 
 Measurement Height(const MeasureOptions& o, const MeasurementDef& m, const LandmarkSet& set,
-                   const ScanQuality& scan) {
+                   const ScanSampling& scan) {
   Measurement out = Start(m);
   const Vec a = Position(set, m.datum[0]);
   out.value_mm = a.z();
@@ -427,16 +422,17 @@ MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue,
     }
   };
 
-  ScanQuality scan;
+  // The scan's noise and spacings (uncertainty_mm), and the slab they give
+  // a sparse scan's girths (SlabForSpacing).
+  ScanSampling& scan = result.sampling;
   {
     const PointIndex index(body_cloud.points);
     scan.noise_mm = ScanNoise(index, &scan.spacing_mm, &scan.surface_spacing_mm);
   }
-  // A sparse scan's girths take a wider slab (SlabForSpacing).
   MeasureOptions girth_options = options;
   girth_options.section = SlabForSpacing(options.section, scan.surface_spacing_mm);
-  result.sampling = {scan.noise_mm, scan.spacing_mm, scan.surface_spacing_mm,
-                     girth_options.section.half_thickness_mm, girth_options.section.piece_gap_mm};
+  scan.slab_half_thickness_mm = girth_options.section.half_thickness_mm;
+  scan.piece_gap_mm = girth_options.section.piece_gap_mm;
   StageClock girth_clock("girths");
   // The body parts: the detector's, else (datum points from a file) found
   // here; none when separate_arms is off or the structure fails.

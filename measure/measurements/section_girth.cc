@@ -361,9 +361,12 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
   };
   for (bool grew = !one_part; grew;) {
     grew = false;
-    const Vec2 mean = Mean(part), fitted = LoopCentre(part);
+    const Vec2 mean = Mean(part);
     int pick = pick_arc(mean);
-    if (pick < 0 && fitted != mean) pick = pick_arc(fitted);
+    if (pick < 0) {
+      const Vec2 fitted = LoopCentre(part);
+      if (fitted != mean) pick = pick_arc(fitted);
+    }
     if (pick >= 0) {
       taken[static_cast<std::size_t>(pick)] = true;
       part.insert(part.end(), pieces[static_cast<std::size_t>(pick)].begin(),
