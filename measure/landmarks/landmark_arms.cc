@@ -23,8 +23,8 @@ constexpr double kElbowShare = 0.49;
 constexpr double kStyloidPastNarrowest_mm = 15;
 // The shortest shoulder-to-arm's-end distance, as a share of stature, that
 // can hold a hand (shoulder to wrist is about 0.33, to the fingertips about
-// 0.44; 0.3 rejected a complete T-posed arm of a heavy body whose shoulder
-// point sits out on the deltoid: 0.29). Shorter, the arm was cut by the
+// 0.44; a complete T-posed arm of a heavy body whose shoulder point sits out
+// on the deltoid reaches 0.29). Shorter, the arm was cut by the
 // booth's view above the wrist whatever its end looks like.
 constexpr double kMinArmShare = 0.25;
 // Below this share of outward-facing normals at the arm's end, the end may
@@ -101,7 +101,7 @@ double EndCapShare(const Context& c, const ArmFrame& f) {
 // measured on complete T-pose and A-pose arms of MakeHuman bodies); a forearm
 // cut off by the edge of the booth's view is round (1.3). A flat hand's
 // fingertips, seen from above and below, have no normal along the arm, so
-// the cap alone called complete arms cut (4 of 40 T-poses in the
+// the cap alone would call complete arms cut (4 of 40 T-poses in the
 // completeness set). 0 with fewer than 10 points there.
 double EndFlatness(const Context& c, const ArmFrame& f) {
   std::vector<Eigen::Vector3d> across;

@@ -82,7 +82,7 @@ bool CrotchFromProfile(const Context& c, double level, Eigen::Vector3d* out) {
 // Over the pubis and the belly the front faces forward or down (|n_x| small).
 // Fewer than three points within 6 mm widen the strip to 10, then 14 mm: a
 // sparse scan (60k points) has one or two there on the pubis as often as
-// not, which read as a hole, and the crotch climbed 50-90 mm. In a true
+// not, which would read as a hole and put the crotch 30-80 mm high. In a true
 // hole between touching thighs the wider strip meets the thighs' walls,
 // whose normals still face sideways.
 bool FrontIsCrease(const Context& c, double z) {
