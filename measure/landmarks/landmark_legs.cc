@@ -95,7 +95,12 @@ int BestNear(const Context& c, const std::vector<std::vector<int>>& leg, double 
 // (profile_extreme.h); -1 when the leg has no section there. The girth
 // profile is smoothed over five slices first: on a leg whose girth barely
 // changes between the calf and the knee the single largest slice is noise.
+// The calf is a bulge: only a level with a section at least kCalfDipMm
+// smaller somewhere above it in the band counts, so the widening below the
+// knee, which outgrows the calf on many heavy legs, is not taken for it (the
+// band's largest girth when no level has such a dip above it).
 double CalfLevel(const Context& c, const std::vector<std::vector<int>>& leg, double lo, double hi) {
+  constexpr double kCalfDipMm = 3;
   std::vector<double> at, raw;
   for (int s = SliceAt(c.slices, lo) - 5; s <= SliceAt(c.slices, hi) + 5; ++s) {
     if (s < 0 || s >= static_cast<int>(c.slices.size())) continue;
@@ -107,9 +112,17 @@ double CalfLevel(const Context& c, const std::vector<std::vector<int>>& leg, dou
   std::vector<bool> inside(raw.size());
   for (size_t k = 0; k < raw.size(); ++k)
     inside[k] = at[k] >= lo - 0.5 * c.step && at[k] <= hi + 0.5 * c.step;
+  // Below a dip: the smallest girth in the band above each level.
+  std::vector<bool> bulge(raw.size(), false);
+  double above = kInf;
+  for (size_t k = raw.size(); k-- > 0;) {
+    bulge[k] = inside[k] && girth[k] > above + kCalfDipMm;
+    if (inside[k] && std::isfinite(girth[k])) above = std::min(above, girth[k]);
+  }
   ProfileExtremeOptions largest;
   largest.minimum = false;
-  const size_t best = BestSample(largest, girth, inside);
+  size_t best = BestSample(largest, girth, bulge);
+  if (best == raw.size()) best = BestSample(largest, girth, inside);
   return best < at.size() ? ProfileExtreme(largest, at, girth, best) : -1;
 }
 

@@ -236,9 +236,11 @@ namespace {
 // the first slice whose front (along `dir`, mean of three slices) stands
 // out - no higher within 25 mm around it and at least 3 mm higher than the
 // front somewhere in the 60 mm below (the fold under the breast) - or -1
-// when the front only grows downwards (no breast ahead of a belly).
+// when the front only grows downwards (no breast ahead of a belly). The
+// rows span slices lo..hi; the fold is sought down to lo, the peak only
+// down to `peak_lo`.
 double BreastLevel(const Context& c, const std::vector<int>& rows, const Eigen::Vector3d& dir,
-                   int lo, int hi) {
+                   int lo, int hi, int peak_lo) {
   std::vector<double> front(static_cast<size_t>(hi - lo + 1), -kInf);
   for (int r : rows) {
     const size_t k = static_cast<size_t>(SliceAt(c.slices, c.points(r, 2)) - lo);
@@ -249,7 +251,7 @@ double BreastLevel(const Context& c, const std::vector<int>& rows, const Eigen::
     mean[k] = (front[k - 1] + front[k] + front[k + 1]) / 3;
   const int around = static_cast<int>(std::lround(25 / c.step)),
             below = static_cast<int>(std::lround(60 / c.step));
-  for (int k = static_cast<int>(mean.size()) - 2; k >= 1; --k) {
+  for (int k = static_cast<int>(mean.size()) - 2; k >= std::max(1, peak_lo - lo); --k) {
     if (!std::isfinite(mean[static_cast<size_t>(k)])) continue;
     bool top = true;
     for (int j = std::max(1, k - around); j <= std::min<int>(k + around, mean.size() - 2); ++j)
@@ -269,7 +271,8 @@ double BreastLevel(const Context& c, const std::vector<int>& rows, const Eigen::
 // The bust points: the most forward trunk point on each side between 2 %
 // and 10 % of stature below the armpit, between 30 % and 100 % of the
 // armpit's distance from the centre line; where a breast stands out ahead
-// of a belly below it, at the breast's level (BreastLevel).
+// of a belly below it (its peak down to 12 % of stature below the armpit),
+// at the breast's level (BreastLevel).
 void Bust(Context* c, double* bust_z) {
   const double h = c->crown_z;
   for (int sign : {+1, -1}) {
@@ -283,11 +286,15 @@ void Bust(Context* c, double* bust_z) {
     // The breast is sought from above the found armpit: where an arm rests
     // on a heavy body's side the armpit is found low, and a breast hanging
     // just under the true armpit would lie above the window.
+    // A low breast (down to 12 % of stature under the armpit) keeps its
+    // fold in view: the rows reach 60 mm further down.
     const int top = SliceAt(c->slices, arm.armpit_z + 0.03 * h),
               lo = SliceAt(c->slices, arm.armpit_z - 0.10 * h),
-              hi = SliceAt(c->slices, arm.armpit_z - 0.02 * h);
+              hi = SliceAt(c->slices, arm.armpit_z - 0.02 * h),
+              peak_lo = SliceAt(c->slices, arm.armpit_z - 0.12 * h),
+              fold_lo = SliceAt(c->slices, arm.armpit_z - 0.12 * h - 60);
     std::vector<int> candidates;
-    for (int s = lo; s <= top; ++s) {
+    for (int s = fold_lo; s <= top; ++s) {
       for (int r : c->TrunkRows(c->slices[static_cast<size_t>(s)])) {
         const double x = sign * c->points(r, 0);
         if (x > 0.3 * ax && x < ax) candidates.push_back(r);
@@ -296,12 +303,14 @@ void Bust(Context* c, double* bust_z) {
     // Breasts point forward and a little outward: the extreme along a
     // direction turned ~11 deg out from straight ahead.
     const Eigen::Vector3d dir = Eigen::Vector3d(sign * 0.2, 1, 0).normalized();
-    const double level = BreastLevel(*c, candidates, dir, lo, top);
-    const double hi_z = c->slices[static_cast<size_t>(hi)].z;
+    const double level = BreastLevel(*c, candidates, dir, fold_lo, top, peak_lo);
+    const double hi_z = c->slices[static_cast<size_t>(hi)].z,
+                 lo_z = c->slices[static_cast<size_t>(lo)].z;
     candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
                                     [&](int r) {
                                       const double z = c->points(r, 2);
-                                      return level > 0 ? std::abs(z - level) > 15 : z > hi_z;
+                                      return level > 0 ? std::abs(z - level) > 15
+                                                       : z > hi_z || z < lo_z - 0.5 * c->step;
                                     }),
                      candidates.end());
     int best = c->SmoothExtreme(candidates, dir, 10, 4);
@@ -313,7 +322,6 @@ void Bust(Context* c, double* bust_z) {
     // below a flat chest. The nipple then lies 3 % of stature under the
     // armpit (adult anthropometry: bust height ~72 %, axilla ~75 %).
     std::string method = level > 0 ? "breast_front_max" : "front_max_below_armpit";
-    const double lo_z = c->slices[static_cast<size_t>(lo)].z;
     if (level < 0 && c->points(best, 2) < lo_z + 4 * c->step) {
       const double z0 = arm.armpit_z - 0.03 * h;
       std::vector<int> chest;

@@ -266,9 +266,48 @@ TEST(DefinedLandmarks, TheWaistIsTheNarrowestSectionAndMovesWithTheBelly) {
               flat.parameters.at("level.waist_mm"), belly.parameters.at("level.waist_mm"),
               At(table, "front_waist").z());
   EXPECT_GT(std::abs(moved), 10);  // the definition decides, not a vertex
-  // Calf: the largest leg girth of its band is at the calf point's level.
+  // Calf: the calf point is at its level.
   const double calf = belly.parameters.at("level.calf_right_mm");
   EXPECT_NEAR(At(belly, "calf_right").z(), calf, 1.5);
+}
+
+// The right leg's hull perimeter at height z (the loop nearest the point).
+double LegGirthAt(const Body& body, double z, const Eigen::Vector3d& near) {
+  const auto loops = SectionLoops(body.mesh, Eigen::Vector3d(0, 0, z), Eigen::Vector3d::UnitZ());
+  const int i = NearestLoop(loops, Eigen::Vector3d(near.x(), near.y(), z));
+  return i < 0 ? 0
+               : LoopHullPerimeter(loops[static_cast<std::size_t>(i)], Eigen::Vector3d::UnitZ());
+}
+
+// The calf by definition is the bulge of the lower leg: seed 1035 (full
+// population) has a leg whose girth widens again under the knee beyond the
+// calf's, and the band's largest girth put the calf 113 mm higher, 28 mm
+// under the knee point. Its level has a narrower section above it in the
+// band, and no level below that narrowing is wider.
+TEST(DefinedLandmarks, TheCalfIsTheBulgeOfTheLowerLeg) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(MakeHumanDir(shared));
+  MakeHumanBodyOptions o;
+  o.seed = 1035;
+  o.population = "full";
+  const Body body = GenerateMakeHumanBody(o, &model);
+  const double knee = At(body, "knee_right").z(), ankle = At(body, "ankle_inside_right").z();
+  const double top = ankle + 0.9 * (knee - ankle), low = ankle + 0.25 * (knee - ankle);
+  const double calf = body.parameters.at("level.calf_right_mm");
+  const Eigen::Vector3d near = At(body, "calf_right");
+  const double girth = LegGirthAt(body, calf, near);
+  double narrowest = girth, narrowest_z = calf;
+  for (double z = calf; z <= top; z += 1) {
+    const double g = LegGirthAt(body, z, near);
+    if (g < narrowest) narrowest = g, narrowest_z = z;
+  }
+  std::printf(
+      "calf level %.1f mm (band %.1f-%.1f), girth %.1f mm; narrowest above %.1f mm at %.1f\n", calf,
+      low, top, girth, narrowest, narrowest_z);
+  EXPECT_LT(calf, top - 20);
+  EXPECT_GE(girth - narrowest, 3 - 0.5);
+  for (double z = low; z <= narrowest_z; z += 1)
+    EXPECT_LE(LegGirthAt(body, z, near), girth + 0.5) << z;
 }
 
 }  // namespace

@@ -12,6 +12,9 @@ namespace bespoke {
 namespace {
 
 const Eigen::Vector3d kUp = Eigen::Vector3d::UnitZ();
+// The smallest narrowing above a calf's level that makes it a bulge, mm of
+// girth (the detector's rule, measure/landmarks/landmark_legs.cc).
+constexpr double kCalfDipMm = 3;
 
 double LoopArea(const SectionLoop& loop) {
   double a = 0;
@@ -102,6 +105,25 @@ double ArgMax(double lo, double hi, double step, const std::function<double(doub
   return best;
 }
 
+// The calf's level in [lo, hi]: like ArgMax, but only among the levels
+// with a girth at least dip_mm smaller somewhere above them in the band (a
+// bulge, not the widening below the knee); ArgMax when there is none.
+double BulgeArgMax(double lo, double hi, double step, double dip_mm,
+                   const std::function<double(double)>& girth) {
+  std::vector<double> at, value;
+  for (double z = lo; z <= hi; z += step) at.push_back(z), value.push_back(girth(z));
+  double above = std::numeric_limits<double>::infinity(), best_value = -above;
+  int best = -1;
+  for (int k = static_cast<int>(at.size()) - 1; k >= 0; --k) {
+    const double g = value[static_cast<std::size_t>(k)];
+    if (g > above + dip_mm && g > best_value) best = k, best_value = g;
+    if (g > 0) above = std::min(above, g);
+  }
+  if (best < 0) return ArgMax(lo, hi, step, girth);
+  const double centre = at[static_cast<std::size_t>(best)];
+  return ArgMax(std::max(lo, centre - step), std::min(hi, centre + step), step / 8, girth);
+}
+
 void Place(Body* body, const std::string& name, const Eigen::Vector3d& position) {
   body->landmarks[name] = ClosestSurfacePoint(body->mesh, position);
 }
@@ -187,14 +209,15 @@ DefinedLevels PlaceDefinedLandmarks(const DefinedLandmarkOptions& options,
         (lowest < 0 || mesh.vertices(v, 2) < mesh.vertices(lowest, 2)))
       lowest = v;
   if (lowest >= 0) Place(body, "crotch", mesh.vertices.row(lowest).transpose());
-  // Calves: the largest leg girth between ankle and knee.
+  // Calves: the largest leg girth between ankle and knee that lies below a
+  // narrower section (the calf's bulge; BulgeArgMax).
   for (const char* side : {"right", "left"}) {
     const std::string s = side;
     const Eigen::Vector3d knee = At(*body, "knee_" + s), ankle = At(*body, "ankle_inside_" + s);
     const Eigen::Vector3d near = At(*body, "calf_" + s);
-    const double z =
-        ArgMax(ankle.z() + 0.25 * (knee.z() - ankle.z()), ankle.z() + 0.9 * (knee.z() - ankle.z()),
-               step, [&](double zz) { return LegGirth(mesh, zz, near, nullptr); });
+    const double z = BulgeArgMax(ankle.z() + 0.25 * (knee.z() - ankle.z()),
+                                 ankle.z() + 0.9 * (knee.z() - ankle.z()), step, kCalfDipMm,
+                                 [&](double zz) { return LegGirth(mesh, zz, near, nullptr); });
     Eigen::Vector3d back;
     LegGirth(mesh, z, near, &back);
     Place(body, "calf_" + s, back);

@@ -31,7 +31,10 @@
 //   crotch: the lowest point of the trunk's mid-sagittal line, the seam
 //     vertices the caller names (`seam`), below the hip level.
 //   calf_*: the back of the leg at the level of its largest girth between
-//     the ankle and the knee datum points (25-90 % of the way up).
+//     the ankle and the knee datum points (25-90 % of the way up) that has
+//     a section 3 mm of girth smaller above it in that band (the calf's
+//     bulge, not the widening below the knee); the band's largest girth
+//     where no level has.
 // Points not listed here stay as given (anatomical points: cervicale,
 // acromion, malleoli, ...). Each moved point becomes the surface point
 // closest to its position.
