@@ -11,15 +11,24 @@
 namespace bespoke::landmarks {
 namespace {
 
-// Heights as shares of the crotch height. A standing scan shows no
-// reliable shape cue for the knee joint or the malleoli (the leg's width
-// changes smoothly there), so the levels come from adult proportions: knee
-// (mid-patella) height about 0.285 and crotch height about 0.47 of stature
-// (ISO 7250-1 style survey data) give 0.61; the MakeHuman bodies' knees sit
-// lower (0.58), the parametric body's at 0.62, so 0.595 between them. The
-// malleoli lie at about 0.09-0.10.
+// Heights as shares of the crotch height, where the scan shows no shape
+// cue: the leg's width changes smoothly at the malleoli (about 0.09-0.10)
+// and round the knee. The knee's first estimate: knee (mid-patella) height
+// about 0.285 and crotch height about 0.47 of stature (ISO 7250-1 style
+// survey data) give 0.61; the MakeHuman bodies' knees sit lower (0.58), the
+// parametric body's at 0.62, so 0.595 between them (KneeLevel refines it).
 constexpr double kKneeShare = 0.595;
 constexpr double kAnkleShare = 0.095;
+
+// The knee's level is sought this far either side of the estimate, mm.
+constexpr double kKneeSearchMm = 50;
+// Mid-patella above the steepest climb of the leg's front profile, mm: about
+// half a kneecap over its lower edge. The median offsets on the oracle's
+// bodies are 12 mm (parametric) and 19 mm (MakeHuman).
+constexpr double kPatellaAboveSteepestMm = 16;
+// The least climb (mm of front per mm of height) that counts as the
+// kneecap's edge; a flatter front keeps the estimate.
+constexpr double kKneeMinSlope = 0.15;
 
 // The leg's rows per slice (index = slice), tracked from mid-shin up to the
 // crotch and down to the sole; empty where the leg was lost.
@@ -126,6 +135,38 @@ double CalfLevel(const Context& c, const std::vector<std::vector<int>>& leg, dou
   return best < at.size() ? ProfileExtreme(largest, at, girth, best) : -1;
 }
 
+// The knee's level near `estimate_z` (mm): the shin lies behind the
+// kneecap, so the leg's front profile (most forward point per slice, mean
+// of five slices) climbs fastest at the kneecap's lower edge, and
+// mid-patella lies kPatellaAboveSteepestMm above that (the climb's peak
+// refined off the slice grid, profile_extreme.h). `estimate_z` when the
+// front climbs less than kKneeMinSlope anywhere within kKneeSearchMm.
+double KneeLevel(const Context& c, const std::vector<std::vector<int>>& leg, double estimate_z,
+                 bool* found) {
+  const int lo = SliceAt(c.slices, estimate_z - kKneeSearchMm) - 4,
+            hi = SliceAt(c.slices, estimate_z + kKneeSearchMm) + 4;
+  std::vector<double> at, front;
+  for (int s = std::max(0, lo); s <= std::min<int>(hi, c.slices.size() - 1); ++s) {
+    double best = kNaN;
+    for (int r : leg[static_cast<size_t>(s)])
+      if (!(c.points(r, 1) <= best)) best = c.points(r, 1);
+    at.push_back(c.slices[static_cast<size_t>(s)].z), front.push_back(best);
+  }
+  const std::vector<double> mean = WindowMean(front, 2, 3);
+  std::vector<double> slope(at.size(), kNaN);
+  std::vector<bool> inside(at.size(), false);
+  for (size_t k = 2; k + 2 < at.size(); ++k) {
+    slope[k] = (mean[k + 2] - mean[k - 2]) / (at[k + 2] - at[k - 2]);
+    inside[k] = std::abs(at[k] - estimate_z) <= kKneeSearchMm;
+  }
+  ProfileExtremeOptions steepest;
+  steepest.minimum = false;
+  const size_t best = BestSample(steepest, slope, inside);
+  *found = best < at.size() && slope[best] >= kKneeMinSlope;
+  if (!*found) return estimate_z;
+  return ProfileExtreme(steepest, at, slope, best) + kPatellaAboveSteepestMm;
+}
+
 void FindLeg(Context* c, int sign) {
   const std::string side = Side(sign);
   const auto leg = TrackLeg(*c, sign);
@@ -140,12 +181,18 @@ void FindLeg(Context* c, int sign) {
   } else {
     c->Missing("thigh" + side, "no leg section below the crotch");
   }
-  const double knee_z = kKneeShare * c->crotch_z;
-  const int knee = BestNear(*c, leg, knee_z, 15, all, Eigen::Vector3d::UnitY());
-  if (knee >= 0)
+  bool edge = false;
+  const double knee_z = KneeLevel(*c, leg, kKneeShare * c->crotch_z, &edge);
+  const int knee = BestNear(*c, leg, knee_z, edge ? 4 : 15, all, Eigen::Vector3d::UnitY());
+  if (knee >= 0 && edge) {
+    Eigen::Vector3d p = c->P(knee);
+    p.z() = knee_z;
+    c->Put("knee" + side, p, 0.7, "front_profile_steepest");
+  } else if (knee >= 0) {
     c->Put("knee" + side, c->P(knee), 0.6, "proportion_front_max");
-  else
+  } else {
     c->Missing("knee" + side, "no leg section at knee height");
+  }
   const double ankle_z = kAnkleShare * c->crotch_z;
   // The ankle's centre: the leg's section 40 mm higher, above the foot.
   double ay = 0;
