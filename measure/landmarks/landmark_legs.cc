@@ -2,6 +2,7 @@
 // each leg's own piece in the slices below the crotch.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "measure/landmarks/landmark_context.h"
@@ -136,21 +137,26 @@ double CalfLevel(const Context& c, const std::vector<std::vector<int>>& leg, dou
 }
 
 // The knee's level near `estimate_z` (mm): the shin lies behind the
-// kneecap, so the leg's front profile (most forward point per slice, mean
-// of five slices) climbs fastest at the kneecap's lower edge, and
-// mid-patella lies kPatellaAboveSteepestMm above that (the climb's peak
-// refined off the slice grid, profile_extreme.h). `estimate_z` when the
-// front climbs less than kKneeMinSlope anywhere within kKneeSearchMm.
+// kneecap, so the leg's front profile (mean of the three most forward
+// points per slice, then of five slices) climbs fastest at the kneecap's
+// lower edge, and mid-patella lies kPatellaAboveSteepestMm above that (the
+// climb's peak refined off the slice grid, profile_extreme.h). `estimate_z`
+// when the front climbs less than kKneeMinSlope anywhere within
+// kKneeSearchMm.
 double KneeLevel(const Context& c, const std::vector<std::vector<int>>& leg, double estimate_z,
                  bool* found) {
   const int lo = SliceAt(c.slices, estimate_z - kKneeSearchMm) - 4,
             hi = SliceAt(c.slices, estimate_z + kKneeSearchMm) + 4;
   std::vector<double> at, front;
   for (int s = std::max(0, lo); s <= std::min<int>(hi, c.slices.size() - 1); ++s) {
-    double best = kNaN;
-    for (int r : leg[static_cast<size_t>(s)])
-      if (!(c.points(r, 1) <= best)) best = c.points(r, 1);
-    at.push_back(c.slices[static_cast<size_t>(s)].z), front.push_back(best);
+    // The mean of the three most forward points: one point's noise moves
+    // the profile's slope, and the knee with it.
+    std::vector<double> y;
+    for (int r : leg[static_cast<size_t>(s)]) y.push_back(c.points(r, 1));
+    const size_t n = std::min<size_t>(3, y.size());
+    std::partial_sort(y.begin(), y.begin() + static_cast<long>(n), y.end(), std::greater<>());
+    at.push_back(c.slices[static_cast<size_t>(s)].z);
+    front.push_back(n < 3 ? kNaN : (y[0] + y[1] + y[2]) / 3);
   }
   const std::vector<double> mean = WindowMean(front, 2, 3);
   std::vector<double> slope(at.size(), kNaN);
@@ -161,6 +167,7 @@ double KneeLevel(const Context& c, const std::vector<std::vector<int>>& leg, dou
   }
   ProfileExtremeOptions steepest;
   steepest.minimum = false;
+  steepest.half_window = 4;
   const size_t best = BestSample(steepest, slope, inside);
   *found = best < at.size() && slope[best] >= kKneeMinSlope;
   if (!*found) return estimate_z;
