@@ -146,6 +146,30 @@ bool SideNeck(const Context& c, int sign, const Neck& neck, double top_z,
   return true;
 }
 
+// T-pose side neck point: raised arms leave no corner between the neck and
+// the shoulder (the coronal contour flares steadily from the neck down to
+// the arm's flat top, and the corner below the chord lands 25-45 mm low on
+// that top). The point is where the plane through the front and back neck
+// points, level from side to side, meets the side of the neck in its
+// coronal band: height `z`, the band's innermost points there. False when
+// the band holds none.
+bool TPoseSideNeck(const Context& c, int sign, const Neck& neck, double z, Eigen::Vector3d* out) {
+  std::vector<double> xs;
+  for (int r : c.At(z).rows) {
+    const double x = sign * c.points(r, 0);
+    if (std::abs(c.points(r, 1) - neck.y) < 8 && std::abs(c.points(r, 2) - z) < 3 && x > 10)
+      xs.push_back(x);
+  }
+  if (xs.empty()) return false;
+  const double inner = *std::min_element(xs.begin(), xs.end());
+  double sum = 0;
+  int n = 0;
+  for (double x : xs)
+    if (x < inner + 5) sum += x, ++n;
+  *out = Eigen::Vector3d(sign * sum / n, neck.y, z);
+  return true;
+}
+
 // Axilla fold: in the section a quarter of the way from the armpit up to
 // the shoulder point, the point deepest inside the section's convex hull
 // near the armpit, in front of it (front) or behind it (back).
@@ -237,7 +261,13 @@ void FindNeckAndShoulders(Context* c) {
       plane.y =
           c->Pos("back_neck").y() + 0.4 * (c->Pos("front_neck").y() - c->Pos("back_neck").y());
     }
-    if (SideNeck(*c, sign, plane, back_z + 0.03 * c->crown_z, acromion, &side)) {
+    const bool ring = arm.t_pose && c->Has("back_neck") && c->Has("front_neck");
+    const double ring_z =
+        ring ? c->Pos("back_neck").z() + 0.4 * (c->Pos("front_neck").z() - c->Pos("back_neck").z())
+             : 0;
+    if (ring && TPoseSideNeck(*c, sign, plane, ring_z, &side)) {
+      c->Put("side_neck" + Side(sign), side, 0.5, "t_pose_level_neck_ring");
+    } else if (SideNeck(*c, sign, plane, back_z + 0.03 * c->crown_z, acromion, &side)) {
       c->Put("side_neck" + Side(sign), side, 0.7, "coronal_neck_shoulder_corner");
     } else {
       c->Missing("side_neck" + Side(sign), "no neck side in the coronal band");

@@ -23,6 +23,7 @@
 #include "oracle/scan_sim/scanned_body.h"
 #include "oracle/truth/defined_landmarks.h"
 #include "oracle/truth/mesh_section.h"
+#include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 #include "tests/support/test_support.h"
 
@@ -450,6 +451,33 @@ TEST(MakeHumanLandmarks, BustPointOverABellyAndUnderALowArmpit) {
   }
 }
 
+// Found minus true height (mm) of each of `names` on `scan`, printed with
+// the method; a missing point fails the test and gives NaN.
+std::vector<double> HeightErrors(const testing::ScannedBody& scan,
+                                 const std::vector<const char*>& names, const std::string& what) {
+  const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
+  std::vector<double> dz;
+  for (const char* name : names) {
+    EXPECT_TRUE(set.Has(name)) << what << " " << name;
+    dz.push_back(set.Has(name) ? set.At(name).position_mm.z() - scan.truth.at(name).z() : kNaN);
+    std::printf("%s %s dz %.1f mm (%s)\n", what.c_str(), name, dz.back(),
+                set.Has(name) ? set.At(name).method.c_str() : "missing");
+  }
+  return dz;
+}
+
+// Every point of `names` within limit_mm of its true height on the
+// full-range MakeHuman bodies of `seeds` in `posture` (default booth).
+void ExpectHeightsWithin(MakeHumanModel* model, const std::vector<std::uint64_t>& seeds,
+                         const char* posture, const std::vector<const char*>& names,
+                         double limit_mm) {
+  for (std::uint64_t seed : seeds) {
+    const std::string what = "seed " + std::to_string(seed);
+    for (double dz : HeightErrors(ScannedFullMakeHuman(model, seed, posture), names, what))
+      EXPECT_LE(std::abs(dz), limit_mm) << what << " (mm)";
+  }
+}
+
 // The knee from the leg's front profile: the shin lies behind the kneecap,
 // and mid-patella sits a little above where the front climbs fastest. From
 // the proportion of crotch height alone the knees of these MakeHuman bodies
@@ -461,32 +489,34 @@ TEST(MakeHumanLandmarks, BustPointOverABellyAndUnderALowArmpit) {
 TEST(MakeHumanLandmarks, KneeFromTheFrontOfTheLeg) {
   BESPOKE_REQUIRE_SHARED(shared);
   MakeHumanModel model(shared / "data/bodies/makehuman");
-  std::vector<double> dz;
+  std::vector<double> errors;
   for (std::uint64_t seed : {1101, 1102, 1103, 1104, 1105, 1106}) {
-    const testing::ScannedBody scan = ScannedFullMakeHuman(&model, seed, "arms-30");
-    const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
-    for (const char* name : {"knee_right", "knee_left"}) {
-      ASSERT_TRUE(set.Has(name)) << seed << " " << name;
-      dz.push_back(std::abs(set.At(name).position_mm.z() - scan.truth.at(name).z()));
-      std::printf("seed %d %s |dz| %.1f mm (%s)\n", static_cast<int>(seed), name, dz.back(),
-                  set.At(name).method.c_str());
-    }
+    for (double dz : HeightErrors(ScannedFullMakeHuman(&model, seed, "arms-30"),
+                                  {"knee_right", "knee_left"}, "seed " + std::to_string(seed)))
+      errors.push_back(std::abs(dz));
   }
-  std::nth_element(dz.begin(), dz.begin() + dz.size() / 2, dz.end());
-  EXPECT_LE(dz[dz.size() / 2], 15.0) << "median knee height error (mm)";
+  std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
+  EXPECT_LE(errors[errors.size() / 2], 15.0) << "median knee height error (mm)";
 }
 
 TEST(ParametricLandmarks, KneeFromTheFrontOfTheLeg) {
   for (std::uint64_t seed : {5, 6, 7}) {
-    const testing::ScannedBody scan = ScannedParametric(seed, 30);
-    const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
-    for (const char* name : {"knee_right", "knee_left"}) {
-      ASSERT_TRUE(set.Has(name)) << seed << " " << name;
-      const double dz = set.At(name).position_mm.z() - scan.truth.at(name).z();
-      std::printf("seed %d %s dz %.1f mm\n", static_cast<int>(seed), name, dz);
-      EXPECT_LE(std::abs(dz), 10.0) << seed << " " << name << " (mm)";
-    }
+    const std::string what = "seed " + std::to_string(seed);
+    for (double dz : HeightErrors(ScannedParametric(seed, 30), {"knee_right", "knee_left"}, what))
+      EXPECT_LE(std::abs(dz), 10.0) << what << " (mm)";
   }
+}
+
+// T-posed MakeHuman bodies: the raised shoulders leave no corner between
+// neck and shoulder, and the corner below the chord put the side neck
+// points on the arm's flat top, 25-45 mm low (the neck girth's plane then
+// took the shoulders in, +150 to +290 mm). The level ring through the
+// front and back neck points holds their height within 20 mm.
+TEST(MakeHumanLandmarks, TPosedSideNeckOnTheNeck) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(shared / "data/bodies/makehuman");
+  ExpectHeightsWithin(&model, {1301, 1302, 1303}, "arms-90", {"side_neck_right", "side_neck_left"},
+                      20.0);
 }
 
 // The calf is the bulge of the lower leg. On many heavy legs the girth
@@ -497,16 +527,8 @@ TEST(ParametricLandmarks, KneeFromTheFrontOfTheLeg) {
 TEST(MakeHumanLandmarks, CalfIsTheBulgeNotTheWideningUnderTheKnee) {
   BESPOKE_REQUIRE_SHARED(shared);
   MakeHumanModel model(shared / "data/bodies/makehuman");
-  for (std::uint64_t seed : {1017, 1025, 1036, 1039}) {
-    const testing::ScannedBody scan = ScannedFullMakeHuman(&model, seed, "arms-30");
-    const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
-    for (const char* name : {"calf_right", "calf_left"}) {
-      ASSERT_TRUE(set.Has(name)) << seed << " " << name;
-      const double dz = set.At(name).position_mm.z() - scan.truth.at(name).z();
-      std::printf("seed %d %s dz %.1f mm\n", static_cast<int>(seed), name, dz);
-      EXPECT_LE(std::abs(dz), 30.0) << seed << " " << name << " (mm)";
-    }
-  }
+  ExpectHeightsWithin(&model, {1017, 1025, 1036, 1039}, "arms-30", {"calf_right", "calf_left"},
+                      30.0);
 }
 
 // One body scanned six times (other noise seeds): the points defined on a

@@ -229,15 +229,19 @@ TEST(MakeHumanPopulation, HardCaseThighsTouch) {
   EXPECT_GE(touching_hard, hard * 3 / 4);
 }
 
+// The hull perimeter (mm) of the horizontal loop at height z that encloses
+// (`enclosing`) or lies nearest to `at`'s (x, y); 0 when there is none.
+double HullGirthAt(const Body& body, double z, const Eigen::Vector3d& at, bool enclosing) {
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitZ(), p(at.x(), at.y(), z);
+  const auto loops = SectionLoops(body.mesh, Eigen::Vector3d(0, 0, z), up);
+  const int i = enclosing ? EnclosingLoop(loops, p, up) : NearestLoop(loops, p);
+  return i < 0 ? 0 : LoopHullPerimeter(loops[static_cast<std::size_t>(i)], up);
+}
+
 // The trunk's hull perimeter at height z (the loop around the midpoint of the
 // front and back waist points).
 double TrunkGirthAt(const Body& body, double z) {
-  const Eigen::Vector3d mid = 0.5 * (At(body, "front_waist") + At(body, "back_waist"));
-  const auto loops = SectionLoops(body.mesh, Eigen::Vector3d(0, 0, z), Eigen::Vector3d::UnitZ());
-  const int i =
-      EnclosingLoop(loops, Eigen::Vector3d(mid.x(), mid.y(), z), Eigen::Vector3d::UnitZ());
-  return i < 0 ? 0
-               : LoopHullPerimeter(loops[static_cast<std::size_t>(i)], Eigen::Vector3d::UnitZ());
+  return HullGirthAt(body, z, 0.5 * (At(body, "front_waist") + At(body, "back_waist")), true);
 }
 
 TEST(DefinedLandmarks, TheWaistIsTheNarrowestSectionAndMovesWithTheBelly) {
@@ -271,12 +275,9 @@ TEST(DefinedLandmarks, TheWaistIsTheNarrowestSectionAndMovesWithTheBelly) {
   EXPECT_NEAR(At(belly, "calf_right").z(), calf, 1.5);
 }
 
-// The right leg's hull perimeter at height z (the loop nearest the point).
+// A leg's hull perimeter at height z (the loop nearest the point).
 double LegGirthAt(const Body& body, double z, const Eigen::Vector3d& near) {
-  const auto loops = SectionLoops(body.mesh, Eigen::Vector3d(0, 0, z), Eigen::Vector3d::UnitZ());
-  const int i = NearestLoop(loops, Eigen::Vector3d(near.x(), near.y(), z));
-  return i < 0 ? 0
-               : LoopHullPerimeter(loops[static_cast<std::size_t>(i)], Eigen::Vector3d::UnitZ());
+  return HullGirthAt(body, z, near, false);
 }
 
 // The calf by definition is the bulge of the lower leg: seed 1035 (full
