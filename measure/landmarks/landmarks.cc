@@ -1,5 +1,6 @@
 // DetectLandmarks: checks, slices the cloud and runs the detector's stages
-// (landmark_context.h), then the symmetry check and the `only` filter.
+// (landmark_context.h), then the plausibility checks (landmark_checks.h)
+// and the `only` filter.
 #include "measure/landmarks/landmarks.h"
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <limits>
 
 #include "measure/catalogue/catalogue.h"
+#include "measure/landmarks/landmark_checks.h"
 #include "measure/landmarks/landmark_context.h"
 #include "scanners/core/errors.h"
 
@@ -131,96 +133,6 @@ std::vector<std::string> Both(std::initializer_list<const char*> names) {
   return out;
 }
 
-// Left and right points of a pair should mirror each other; a height
-// difference beyond 40 mm (people are not that asymmetric) is flagged.
-void CheckSymmetry(LandmarkSet* set) {
-  for (auto& [name, right] : set->points) {
-    const std::string suffix = "_right";
-    if (name.size() <= suffix.size() ||
-        name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
-      continue;
-    auto left = set->points.find(name.substr(0, name.size() - suffix.size()) + "_left");
-    if (left == set->points.end()) continue;
-    if (std::abs(left->second.position_mm.z() - right.position_mm.z()) > 40) {
-      for (Landmark* l : {&right, &left->second}) {
-        l->flags.push_back("asymmetric");
-        l->confidence = std::min(l->confidence, 0.4);
-      }
-    }
-  }
-}
-
-// Flags `name` as placed against body proportions (confidence <= 0.3) with
-// the reason in its method tag.
-void Implausible(LandmarkSet* set, const std::string& name, const std::string& why) {
-  auto it = set->points.find(name);
-  if (it == set->points.end()) return;
-  Landmark& l = it->second;
-  if (std::find(l.flags.begin(), l.flags.end(), "implausible") != l.flags.end()) return;
-  l.flags.push_back("implausible");
-  l.method += " (" + why + ")";
-  l.confidence = std::min(l.confidence, 0.3);
-}
-
-// Heights as shares of stature `h` that adults span with a wide margin
-// (anthropometric surveys put the means at crotch 0.47, armpit 0.73,
-// acromion 0.82, cervicale 0.85, waist 0.61, buttock 0.50, knee 0.28,
-// lateral malleolus 0.04): a point outside is flagged, not passed on.
-void CheckProportions(LandmarkSet* set, double h) {
-  struct Range {
-    const char* name;
-    double lo, hi;
-  };
-  static const Range kRanges[] = {
-      {"crotch", 0.40, 0.55},
-      {"armpit_right", 0.65, 0.80},
-      {"armpit_left", 0.65, 0.80},
-      {"shoulder_right", 0.76, 0.88},
-      {"shoulder_left", 0.76, 0.88},
-      {"back_neck", 0.80, 0.90},
-      {"front_neck", 0.76, 0.87},
-      {"front_waist", 0.52, 0.70},
-      {"back_waist", 0.52, 0.70},
-      {"side_waist_right", 0.52, 0.70},
-      {"side_waist_left", 0.52, 0.70},
-      {"hip_back", 0.42, 0.58},
-      {"hip_right", 0.42, 0.58},
-      {"hip_left", 0.42, 0.58},
-      {"knee_right", 0.22, 0.34},
-      {"knee_left", 0.22, 0.34},
-      {"ankle_outside_right", 0.02, 0.075},
-      {"ankle_outside_left", 0.02, 0.075},
-      {"ankle_inside_right", 0.02, 0.075},
-      {"ankle_inside_left", 0.02, 0.075},
-  };
-  for (const Range& r : kRanges) {
-    if (!set->Has(r.name)) continue;
-    const double share = set->points.at(r.name).position_mm.z() / h;
-    if (share < r.lo || share > r.hi) {
-      char why[96];
-      std::snprintf(why, sizeof(why), "height %.2f of stature, expected %.2f-%.2f", share, r.lo,
-                    r.hi);
-      Implausible(set, r.name, why);
-    }
-  }
-  // Order down the trunk: bust under the armpit, under-bust under the bust,
-  // waist between hip and under-bust, hip above the crotch.
-  auto z = [&](const char* name) { return set->points.at(name).position_mm.z(); };
-  for (const char* side : {"_right", "_left"}) {
-    const std::string bust = std::string("bust") + side, armpit = std::string("armpit") + side;
-    if (set->Has(bust) && set->Has(armpit) &&
-        (z(bust.c_str()) > z(armpit.c_str()) + 0.01 * h ||
-         z(bust.c_str()) < z(armpit.c_str()) - 0.15 * h))
-      Implausible(set, bust, "not 0-15 % of stature under the armpit");
-  }
-  if (set->Has("under_bust") && set->Has("bust_right") && z("under_bust") > z("bust_right"))
-    Implausible(set, "under_bust", "above the bust point");
-  if (set->Has("hip_back") && set->Has("crotch") && z("hip_back") < z("crotch"))
-    Implausible(set, "hip_back", "below the crotch");
-  if (set->Has("front_waist") && set->Has("hip_back") && z("front_waist") < z("hip_back"))
-    Implausible(set, "front_waist", "below the hip level");
-}
-
 }  // namespace
 }  // namespace landmarks
 
@@ -270,8 +182,7 @@ LandmarkSet DetectLandmarks(const LandmarkOptions& options, const PointCloud& cl
   Run(&c, FindArms, Both({"upper_arm", "elbow", "wrist"}));
   Run(&c, FindLegs, Both({"thigh", "knee", "calf", "ankle_inside", "ankle_outside"}));
   ProgressUpdate(progress, 2);
-  CheckSymmetry(&c.found);
-  CheckProportions(&c.found, c.crown_z);
+  CheckLandmarks(&c.found, c.crown_z);
 
   LandmarkSet set = std::move(c.found);
   if (c.structure.ok) set.parts = c.structure.part;
