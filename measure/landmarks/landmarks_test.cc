@@ -433,8 +433,8 @@ TEST(MakeHumanLandmarks, UpperArmsRestingOnAHeavyTrunkAreTheArms) {
 // 1006; a window below that armpit finds the belly, 180 mm low), a man with a
 // belly under a flat chest (seed 1028; the belly's front, 145 mm low) and a
 // heavy body whose breast peaks 10 % of stature under the armpit (seed 1058:
-// with the fold sought only above 10 % it read as a belly and the point went
-// 3 % under the armpit, 103 mm off).
+// with the fold sought only above 10 % it reads as a belly and the point
+// goes 3 % under the armpit, 103 mm off).
 TEST(MakeHumanLandmarks, BustPointOverABellyAndUnderALowArmpit) {
   BESPOKE_REQUIRE_SHARED(shared);
   MakeHumanModel model(shared / "data/bodies/makehuman");
@@ -481,7 +481,7 @@ void ExpectHeightsWithin(MakeHumanModel* model, const std::vector<std::uint64_t>
 // The knee from the leg's front profile: the shin lies behind the kneecap,
 // and mid-patella sits a little above where the front climbs fastest. From
 // the proportion of crotch height alone the knees of these MakeHuman bodies
-// (full population, seeds not looked at while choosing the rule) were 0-52
+// (full population, seeds not looked at while choosing the rule) are 0-52
 // mm off in height (median 21); from the front profile 2-59 (median 9). The
 // parametric bodies hold the knee within 10 mm either way (3-7 mm by
 // proportion, 1-6 from the profile): the check that the cue holds on a
@@ -508,9 +508,9 @@ TEST(ParametricLandmarks, KneeFromTheFrontOfTheLeg) {
 }
 
 // T-posed MakeHuman bodies: the raised shoulders leave no corner between
-// neck and shoulder, and the corner below the chord put the side neck
+// neck and shoulder, and the corner below the chord puts the side neck
 // points on the arm's flat top, 25-45 mm low (the neck girth's plane then
-// took the shoulders in, +150 to +290 mm). The level ring through the
+// takes the shoulders in, +150 to +290 mm). The level ring through the
 // front and back neck points holds their height within 20 mm.
 TEST(MakeHumanLandmarks, TPosedSideNeckOnTheNeck) {
   BESPOKE_REQUIRE_SHARED(shared);
@@ -521,7 +521,7 @@ TEST(MakeHumanLandmarks, TPosedSideNeckOnTheNeck) {
 
 // The calf is the bulge of the lower leg. On many heavy legs the girth
 // widens again under the knee and outgrows the calf; with the band's largest
-// girth the calf went 99-126 mm high on these seeds (of the completeness
+// girth the calf lands 99-126 mm high on these seeds (of the completeness
 // set's far points), to the top of a band that reaches further up than the
 // truth's because the knee is found high.
 TEST(MakeHumanLandmarks, CalfIsTheBulgeNotTheWideningUnderTheKnee) {

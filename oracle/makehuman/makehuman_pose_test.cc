@@ -282,7 +282,7 @@ double LegGirthAt(const Body& body, double z, const Eigen::Vector3d& near) {
 
 // The calf by definition is the bulge of the lower leg: seed 1035 (full
 // population) has a leg whose girth widens again under the knee beyond the
-// calf's, and the band's largest girth put the calf 113 mm higher, 28 mm
+// calf's, and the band's largest girth puts the calf 113 mm higher, 28 mm
 // under the knee point. Its level has a narrower section above it in the
 // band, and no level below that narrowing is wider.
 TEST(DefinedLandmarks, TheCalfIsTheBulgeOfTheLowerLeg) {
