@@ -188,10 +188,10 @@ void FindLeg(Context* c, int sign) {
   } else {
     c->Missing("thigh" + side, "no leg section below the crotch");
   }
-  bool edge = false;
-  const double knee_z = KneeLevel(*c, leg, kKneeShare * c->crotch_z, &edge);
-  const int knee = BestNear(*c, leg, knee_z, edge ? 4 : 15, all, Eigen::Vector3d::UnitY());
-  if (knee >= 0 && edge) {
+  bool from_profile = false;
+  const double knee_z = KneeLevel(*c, leg, kKneeShare * c->crotch_z, &from_profile);
+  const int knee = BestNear(*c, leg, knee_z, from_profile ? 4 : 15, all, Eigen::Vector3d::UnitY());
+  if (knee >= 0 && from_profile) {
     Eigen::Vector3d p = c->P(knee);
     p.z() = knee_z;
     c->Put("knee" + side, p, 0.7, "front_profile_steepest");

@@ -422,11 +422,21 @@ MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue,
     }
   };
 
+  // The geodesic grid, when a length needs one; its point index serves the
+  // scan's noise below, so the cloud is indexed once.
+  std::unique_ptr<CloudGeodesics> geodesics;
+  if (!paths.empty()) {
+    StageClock grid_clock("geodesic_grid");
+    geodesics = std::make_unique<CloudGeodesics>(options.geodesics, body_cloud.points, progress);
+    result.stages.push_back(grid_clock.Stop());
+  }
   // The scan's noise and spacings (uncertainty_mm), and the slab they give
   // a sparse scan's girths (SlabForSpacing).
   ScanSampling& scan = result.sampling;
   {
-    const PointIndex index(body_cloud.points);
+    std::unique_ptr<PointIndex> own;
+    if (!geodesics) own = std::make_unique<PointIndex>(body_cloud.points);
+    const PointIndex& index = geodesics ? geodesics->grid().index() : *own;
     scan.noise_mm = ScanNoise(index, &scan.spacing_mm, &scan.surface_spacing_mm);
   }
   MeasureOptions girth_options = options;
@@ -452,11 +462,7 @@ MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue,
   ProgressEnd(progress);
   result.stages.push_back(girth_clock.Stop());
 
-  std::unique_ptr<CloudGeodesics> geodesics;
-  if (!paths.empty()) {
-    StageClock grid_clock("geodesic_grid");
-    geodesics = std::make_unique<CloudGeodesics>(options.geodesics, body_cloud.points, progress);
-    result.stages.push_back(grid_clock.Stop());
+  if (geodesics) {
     StageClock path_clock("geodesics");
     GeodesicPathOptions path_options;
     path_options.tolerance_mm = options.datum_tolerance_mm;
