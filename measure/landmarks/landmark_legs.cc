@@ -24,8 +24,9 @@ constexpr double kAnkleShare = 0.095;
 // The knee's level is sought this far either side of the estimate, mm.
 constexpr double kKneeSearchMm = 50;
 // Mid-patella above the steepest climb of the leg's front profile, mm: about
-// half a kneecap over its lower edge. The median offsets on the oracle's
-// bodies are 12 mm (parametric) and 19 mm (MakeHuman).
+// half a kneecap over its lower edge, set between the offsets the oracle's
+// two body models show (the knee's median height error it leaves on the
+// full-range sets is in docs/landmarks.md).
 constexpr double kPatellaAboveSteepestMm = 16;
 // The least climb (mm of front per mm of height) that counts as the
 // kneecap's edge; a flatter front keeps the estimate.
