@@ -210,4 +210,21 @@ BodyStructure FindBodyStructure(const BodyStructureOptions& o, const Eigen::Matr
   return s;
 }
 
+void ReturnFilletToTrunk(const Eigen::MatrixX3d& points, int side, const Eigen::Vector3d& armpit,
+                         int armpit_row, BodyStructure* s) {
+  const std::vector<double>& d = s->from_hand[side];
+  if (d.size() != static_cast<size_t>(points.rows()) || armpit_row < 0 ||
+      armpit_row >= points.rows())
+    return;
+  const double limit = d[static_cast<size_t>(armpit_row)], sign = side == 0 ? 1 : -1;
+  const Part arm = side == 0 ? Part::kArmRight : Part::kArmLeft;
+  if (!std::isfinite(limit)) return;
+  for (Eigen::Index r = 0; r < points.rows(); ++r) {
+    const size_t i = static_cast<size_t>(r);
+    if (s->part[i] != arm || !(d[i] > limit)) continue;
+    if (points(r, 2) < armpit.z() && sign * points(r, 0) < sign * armpit.x())
+      s->part[i] = Part::kTrunk;
+  }
+}
+
 }  // namespace bespoke::landmarks

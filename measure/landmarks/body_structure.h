@@ -64,6 +64,18 @@ struct BodyStructure {
 BodyStructure FindBodyStructure(const BodyStructureOptions& options, const Eigen::MatrixX3d& points,
                                 const Eigen::MatrixX3d& normals, double stature_mm);
 
+// Gives back to the trunk the points of arm `side` (0 right, 1 left) of `s`
+// that lie under and medial of the found armpit `armpit` (body frame, mm;
+// `armpit_row` the cloud row nearest it) and farther from the hand than that
+// row (`from_hand`): the skin between a raised arm's underside and the
+// trunk's side, which the structure's corner (the bottom of that fillet,
+// where the side turns vertical) leaves to the arm (a T-pose's chest
+// section would lose its sides). An arm hanging beside the trunk is nearer
+// the hand than its armpit and the outside of the upper arm lies lateral of
+// it: both stay arm. A side without a hand distance is left as it is.
+void ReturnFilletToTrunk(const Eigen::MatrixX3d& points, int side, const Eigen::Vector3d& armpit,
+                         int armpit_row, BodyStructure* s);
+
 }  // namespace bespoke::landmarks
 
 #endif  // BESPOKE_MEASURE_LANDMARKS_BODY_STRUCTURE_H_

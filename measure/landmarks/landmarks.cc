@@ -185,7 +185,17 @@ LandmarkSet DetectLandmarks(const LandmarkOptions& options, const PointCloud& cl
   CheckLandmarks(&c.found, c.crown_z);
 
   LandmarkSet set = std::move(c.found);
-  if (c.structure.ok) set.parts = c.structure.part;
+  if (c.structure.ok) {
+    // The found armpits give the raised arm's fillet back to the trunk
+    // (body_structure.h); a doubtful armpit changes nothing.
+    for (int side : {0, 1}) {
+      const std::string name = side == 0 ? "armpit_right" : "armpit_left";
+      if (!set.Has(name) || set.points.at(name).confidence < 0.5) continue;
+      const Eigen::Vector3d p = set.points.at(name).position_mm;
+      ReturnFilletToTrunk(cloud.points, side, p, c.index->Nearest(p), &c.structure);
+    }
+    set.parts = c.structure.part;
+  }
   const Catalogue& catalogue = Catalogue::Builtin();
   for (const LandmarkDef& def : catalogue.landmarks()) {
     if (!set.Has(def.name) && !set.missing.count(def.name)) set.missing[def.name] = "not detected";

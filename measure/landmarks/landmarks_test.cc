@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "measure/catalogue/catalogue.h"
+#include "measure/landmarks/landmark_slices.h"
 #include "oracle/body/parametric_body.h"
 #include "oracle/makehuman/makehuman_body.h"
 #include "oracle/makehuman/makehuman_pose.h"
@@ -517,6 +518,40 @@ TEST(MakeHumanLandmarks, TPosedSideNeckOnTheNeck) {
   MakeHumanModel model(shared / "data/bodies/makehuman");
   ExpectHeightsWithin(&model, {1301, 1302, 1303}, "arms-90", {"side_neck_right", "side_neck_left"},
                       20.0);
+}
+
+// A raised arm meets the trunk through a fillet of skin that the body
+// structure's armpit corner (where the side turns vertical, 50-90 mm under
+// the apex on these bodies) leaves to the arm; the chest's section just under
+// the armpits then lost its sides (155-170 mm of girth on T-posed bodies of
+// another seed range). Under and medial of each found armpit the fillet is
+// the trunk's again: the slab under the armpits has a trunk-only hull within
+// 25 mm of the hull of all its points near the trunk.
+TEST(MakeHumanLandmarks, TPosedChestSectionKeepsItsSides) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(shared / "data/bodies/makehuman");
+  for (std::uint64_t seed : {1301, 1302, 1303}) {
+    const testing::ScannedBody scan = ScannedFullMakeHuman(&model, seed, "arms-90");
+    const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
+    ASSERT_TRUE(set.Has("armpit_right") && set.Has("armpit_left")) << seed;
+    ASSERT_EQ(set.parts.size(), static_cast<size_t>(scan.cloud.size())) << seed;
+    const Eigen::Vector3d r = set.At("armpit_right").position_mm,
+                          l = set.At("armpit_left").position_mm;
+    const double z = 0.5 * (r.z() + l.z()) - 5, reach = std::max(r.x(), -l.x()) + 40;
+    std::vector<int> all, trunk;
+    for (Eigen::Index i = 0; i < scan.cloud.points.rows(); ++i) {
+      const Eigen::Vector3d p = scan.cloud.points.row(i);
+      if (std::abs(p.z() - z) > 2.5 || std::abs(p.x()) > reach) continue;
+      all.push_back(static_cast<int>(i));
+      if (set.parts[static_cast<size_t>(i)] == ScanPart::kTrunk)
+        trunk.push_back(static_cast<int>(i));
+    }
+    const double whole = landmarks::HullPerimeter(scan.cloud.points, all),
+                 kept = landmarks::HullPerimeter(scan.cloud.points, trunk);
+    std::printf("seed %d: slab at %.0f mm, hull %.1f mm, trunk's %.1f mm\n", static_cast<int>(seed),
+                z, whole, kept);
+    EXPECT_LE(whole - kept, 25.0) << "seed " << seed << " (mm)";
+  }
 }
 
 // The calf is the bulge of the lower leg. On many heavy legs the girth
