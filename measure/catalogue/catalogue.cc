@@ -132,6 +132,9 @@ MeasurementDef ParseMeasurement(const json& entry, const std::string& where) {
   m.side = RequiredString(entry, "side", at);
   if (m.side != "right" && m.side != "both" && m.side != "centre")
     throw InputError(at + ": side must be right, both or centre, not '" + m.side + "'");
+  m.narrowest_up_to = OptionalString(entry, "narrowest_up_to", at);
+  if (!m.narrowest_up_to.empty() && (m.plane != GirthPlane::kHorizontal || m.side != "right"))
+    throw InputError(at + ": 'narrowest_up_to' needs a horizontal girth of a right-side limb");
   m.definition = RequiredString(entry, "definition", at);
   m.standard = RequiredString(entry, "standard", at);
   m.deviation = OptionalString(entry, "deviation", at);
@@ -187,6 +190,8 @@ Catalogue Catalogue::FromJson(const json& document, const std::string& source) {
       for (const std::string& name : *list)
         if (!c.HasLandmark(name))
           throw InputError(where + " ('" + m.name + "'): unknown landmark '" + name + "'");
+    if (!m.narrowest_up_to.empty() && !c.HasLandmark(m.narrowest_up_to))
+      throw InputError(where + " ('" + m.name + "'): unknown landmark '" + m.narrowest_up_to + "'");
     if (!c.measurement_index_.emplace(m.name, c.measurements_.size()).second)
       throw InputError(where + ": duplicate measurement name '" + m.name + "'");
     c.measurements_.push_back(std::move(m));

@@ -66,6 +66,11 @@ struct MeasurementDef {
   // (up to 100 mm) until the trunk's section is free (chest: "just under the
   // armpits"); "" (default) neither.
   std::string arms;
+  // Horizontal limb girths: the plane moves up from datum[0]'s height to this
+  // landmark's height and the girth is the smallest section there (ankle:
+  // the minimum girth above the malleoli, up to the calf); "" (default) the
+  // plane stays at the datum points.
+  std::string narrowest_up_to;
   std::string side;  // "right", "both" (uses both sides) or "centre"
   std::string definition, deviation, standard, thesis;  // deviation/thesis may be empty
   std::string valentina, freesewing;                    // empty where none exists

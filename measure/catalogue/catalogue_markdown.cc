@@ -29,6 +29,8 @@ std::string MethodText(const MeasurementDef& m) {
         return "hull of the section ⟂ axis " + Code(m.axis[0]) + " → " + Code(m.axis[1]);
       if (m.plane == GirthPlane::kThroughPoints)
         return "hull of the section in the plane through the three datum points";
+      if (!m.narrowest_up_to.empty())
+        return "hull of the smallest horizontal section up to " + Code(m.narrowest_up_to);
       return "hull of the horizontal section";
     case MeasurementMethod::kGeodesic:
       return m.to_floor ? "geodesic chain, + height of the last point" : "geodesic chain";

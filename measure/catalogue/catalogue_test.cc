@@ -126,6 +126,16 @@ TEST(Catalogue, MalformedDocumentsAreInputErrors) {
   bad["landmarks"][0].erase("definition");
   EXPECT_THROW(Catalogue::FromJson(bad, "definition"), InputError);
   EXPECT_THROW(Catalogue::FromJson(json::array(), "array"), InputError);
+  // "narrowest_up_to": a known landmark, on a horizontal right-side girth.
+  std::size_t ankle = 0;
+  while (good["measurements"][ankle]["name"] != "ankle_girth") ++ankle;
+  EXPECT_EQ(Catalogue::Builtin().Measurement("ankle_girth").narrowest_up_to, "calf_right");
+  bad = good;
+  bad["measurements"][ankle]["narrowest_up_to"] = "no_such_point";
+  EXPECT_THROW(Catalogue::FromJson(bad, "unknown top"), InputError);
+  bad = good;
+  bad["measurements"][ankle]["side"] = "centre";
+  EXPECT_THROW(Catalogue::FromJson(bad, "not a limb"), InputError);
 }
 
 // docs/measurements.md is generated from the catalogue; this fails when it is

@@ -31,15 +31,23 @@ const Vec& Position(const LandmarkSet& set, const std::string& name) {
   return it->second.position_mm;
 }
 
-// The first datum/axis point the set lacks, with the detector's reason, or "".
+// The landmarks `m` is measured from: its datum and axis points and the
+// top of a "narrowest_up_to" search.
+std::vector<std::string> Referenced(const MeasurementDef& m) {
+  std::vector<std::string> out = m.datum;
+  out.insert(out.end(), m.axis.begin(), m.axis.end());
+  if (!m.narrowest_up_to.empty()) out.push_back(m.narrowest_up_to);
+  return out;
+}
+
+// The first referenced point the set lacks, with the detector's reason, or "".
 std::string MissingReason(const MeasurementDef& m, const LandmarkSet& set) {
-  for (const auto* list : {&m.datum, &m.axis})
-    for (const std::string& name : *list) {
-      if (set.points.count(name)) continue;
-      const auto why = set.missing.find(name);
-      return "no landmark '" + name + "'" +
-             (why == set.missing.end() ? "" : " (" + why->second + ")");
-    }
+  for (const std::string& name : Referenced(m)) {
+    if (set.points.count(name)) continue;
+    const auto why = set.missing.find(name);
+    return "no landmark '" + name + "'" +
+           (why == set.missing.end() ? "" : " (" + why->second + ")");
+  }
   return "";
 }
 
@@ -47,13 +55,12 @@ std::string MissingReason(const MeasurementDef& m, const LandmarkSet& set) {
 void FlagUncertain(const MeasureOptions& o, const MeasurementDef& m, const LandmarkSet& set,
                    Measurement* out) {
   std::set<std::string> seen;
-  for (const auto* list : {&m.datum, &m.axis})
-    for (const std::string& name : *list) {
-      const Landmark& l = set.points.at(name);
-      bool doubtful = l.confidence < o.uncertain_confidence;
-      for (const std::string& f : l.flags) doubtful |= f != "override";
-      if (doubtful && seen.insert(name).second) out->uncertain_landmarks.push_back(name);
-    }
+  for (const std::string& name : Referenced(m)) {
+    const Landmark& l = set.points.at(name);
+    bool doubtful = l.confidence < o.uncertain_confidence;
+    for (const std::string& f : l.flags) doubtful |= f != "override";
+    if (doubtful && seen.insert(name).second) out->uncertain_landmarks.push_back(name);
+  }
   if (!out->uncertain_landmarks.empty()) out->flags.push_back("landmark_uncertain");
 }
 
@@ -160,6 +167,12 @@ Measurement Girth(const MeasureOptions& o, const MeasurementDef& m, const PointC
     anchors.row(static_cast<Eigen::Index>(i)) = Position(set, m.datum[i]);
   bool one_part = false;
   const std::vector<bool> leave_out = LeaveOut(m, cloud, parts, anchors, &one_part);
+  if (!m.narrowest_up_to.empty()) {
+    point.z() = NarrowestSectionZ(o.section, cloud.points, cloud.normals, point.z(),
+                                  Position(set, m.narrowest_up_to).z(), o.narrowest_step_mm,
+                                  o.narrowest_window, anchors, leave_out);
+    anchors.col(2).setConstant(point.z());
+  }
   SectionGirth s = MeasureSectionGirth(o.section, cloud.points, cloud.normals, point, normal,
                                        anchors, leave_out, one_part);
   while (m.arms == "lower" && out.lowered_mm + o.lower_step_mm <= o.max_lower_mm && s.points > 0 &&
@@ -340,6 +353,8 @@ void MeasureOptions::Check() const {
   if (!(arms_margin_mm >= 0)) throw InputError("measure: arms_margin_mm must be >= 0");
   if (!(lower_step_mm > 0) || !(max_lower_mm >= 0))
     throw InputError("measure: need lower_step_mm > 0, max_lower_mm >= 0");
+  if (!(narrowest_step_mm > 0) || narrowest_window < 1)
+    throw InputError("measure: need narrowest_step_mm > 0, narrowest_window >= 1");
   if (geodesic_threads < 1) throw InputError("measure: geodesic_threads must be >= 1");
   if (!(uncertain_confidence >= 0 && uncertain_confidence <= 1))
     throw InputError("measure: uncertain_confidence must be in [0, 1]");

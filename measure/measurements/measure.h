@@ -59,10 +59,12 @@ struct MeasureOptions {
   CloudGeodesicsOptions geodesics;  // geodesic lengths (defaults in cloud_geodesics.h)
   UncertaintyOptions uncertainty;   // uncertainty_mm (defaults in uncertainty.h)
   double datum_tolerance_mm = 20;   // default 20 mm: "datum_off_section" / "datum_off_scan"
-  double max_bridge_mm = 80;   // default 80 mm: a datum point this far in a scan hole is bridged
-  double arms_margin_mm = 30;  // default 30 mm: "section_includes_arms" beyond the datums' x
-  double lower_step_mm = 2;    // default 2 mm: arms "lower" plane step
-  double max_lower_mm = 100;   // default 100 mm: arms "lower" limit
+  double max_bridge_mm = 80;     // default 80 mm: a datum point this far in a scan hole is bridged
+  double arms_margin_mm = 30;    // default 30 mm: "section_includes_arms" beyond the datums' x
+  double lower_step_mm = 2;      // default 2 mm: arms "lower" plane step
+  double max_lower_mm = 100;     // default 100 mm: arms "lower" limit
+  double narrowest_step_mm = 2;  // default 2 mm: level step of a "narrowest_up_to" girth
+  int narrowest_window = 5;      // default 5: levels averaged there before the smallest is taken
   double uncertain_confidence = 0.5;  // default 0.5: below it a landmark is "uncertain"
   int geodesic_threads = 2;           // default 2: threads for the geodesic lengths (each
                                       // beyond the first builds its own grid)

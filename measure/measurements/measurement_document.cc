@@ -115,6 +115,8 @@ nlohmann::json ToJson(const MeasureOptions& o) {
           {"arms_margin_mm", o.arms_margin_mm},
           {"lower_step_mm", o.lower_step_mm},
           {"max_lower_mm", o.max_lower_mm},
+          {"narrowest_step_mm", o.narrowest_step_mm},
+          {"narrowest_window", o.narrowest_window},
           {"uncertain_confidence", o.uncertain_confidence},
           {"only", o.only}};
 }

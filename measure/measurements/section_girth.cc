@@ -395,4 +395,29 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
   return out;
 }
 
+double NarrowestSectionZ(const SectionGirthOptions& options, const Eigen::MatrixX3d& cloud,
+                         const Eigen::MatrixX3d& normals, double z_from, double z_to,
+                         double step_mm, int window, const Eigen::MatrixX3d& anchors,
+                         const std::vector<bool>& leave_out) {
+  if (!(step_mm > 0) || !(z_to > z_from) || window < 1) return z_from;
+  std::vector<double> z, girth;
+  Eigen::MatrixX3d at = anchors;
+  for (double level = z_from; level <= z_to; level += step_mm) {
+    at.col(2).setConstant(level);
+    const SectionGirth s =
+        MeasureSectionGirth(options, cloud, normals, Eigen::Vector3d(0, 0, level),
+                            Eigen::Vector3d::UnitZ(), at, leave_out);
+    if (s.points == 0) continue;
+    z.push_back(level), girth.push_back(s.girth_mm);
+  }
+  const int n = static_cast<int>(z.size()), half = window / 2;
+  double best = std::numeric_limits<double>::infinity(), best_z = z_from;
+  for (int i = half; i + half < n; ++i) {
+    double mean = 0;
+    for (int k = i - half; k <= i + half; ++k) mean += girth[static_cast<size_t>(k)];
+    if (mean < best) best = mean, best_z = z[static_cast<size_t>(i)];
+  }
+  return best_z;
+}
+
 }  // namespace bespoke

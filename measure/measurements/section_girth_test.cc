@@ -293,5 +293,38 @@ TEST(SectionGirth, EmptySlabAndBadOptions) {
                InputError);
 }
 
+// A shank as a surface of revolution, radius 40 + 0.004 (z - 120)^2 mm
+// (narrowest, 2 pi 40 mm round, at z = 120), sampled every 2 mm with 1 mm of
+// radial noise, and a thinner leg 200 mm beside it that the anchor leaves
+// out. The smallest section from z = 20 to z = 280 is found at its height
+// within the 6 mm a 5-level window spans either way of a flat minimum.
+TEST(SectionGirth, NarrowestSectionOfAShank) {
+  std::mt19937 rng(5);
+  std::normal_distribution<double> noise(0, 1);
+  std::vector<Eigen::Vector3d> cloud;
+  for (double z = 0; z <= 300; z += 2) {
+    const double r = 40 + 0.004 * (z - 120) * (z - 120);
+    for (int k = 0; k < 150; ++k) {
+      const double t = 2 * kPi * k / 150, rn = r + noise(rng);
+      cloud.emplace_back(rn * std::cos(t), rn * std::sin(t), z);
+      cloud.emplace_back(200 + 30 * std::cos(t), 30 * std::sin(t), z);
+    }
+  }
+  Eigen::MatrixX3d anchor(1, 3);
+  anchor << 45, 0, 20;
+  const double z = NarrowestSectionZ(SectionGirthOptions{}, ToMatrix(cloud), Eigen::MatrixX3d(0, 3),
+                                     20, 280, 2, 5, anchor);
+  EXPECT_NEAR(z, 120, 6) << "mm";
+  anchor(0, 2) = z;
+  const SectionGirth s =
+      MeasureSectionGirth(SectionGirthOptions{}, ToMatrix(cloud), Eigen::MatrixX3d(0, 3),
+                          Eigen::Vector3d(0, 0, z), kUp, anchor);
+  EXPECT_NEAR(s.girth_mm, 2 * kPi * 40, 3) << "mm";
+  // No band to search: the start.
+  EXPECT_EQ(NarrowestSectionZ(SectionGirthOptions{}, ToMatrix(cloud), Eigen::MatrixX3d(0, 3), 50,
+                              40, 2, 5, anchor),
+            50);
+}
+
 }  // namespace
 }  // namespace bespoke

@@ -399,8 +399,7 @@ std::string GirthLandmark(const std::string& measurement, const std::string& sid
       {"hip_girth", "hip_back"}};
   static const std::map<std::string, std::string> limb = {
       {"upper_arm_girth", "upper_arm"}, {"elbow_girth", "elbow"}, {"wrist_girth", "wrist"},
-      {"thigh_girth", "thigh"},         {"knee_girth", "knee"},   {"calf_girth", "calf"},
-      {"ankle_girth", "ankle_outside"}};
+      {"thigh_girth", "thigh"},         {"knee_girth", "knee"},   {"calf_girth", "calf"}};
   if (side.empty()) return torso.count(measurement) ? torso.at(measurement) : "";
   return limb.count(measurement) ? limb.at(measurement) + "_" + side : "";
 }

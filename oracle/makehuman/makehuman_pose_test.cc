@@ -4,13 +4,17 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 
+#include "measure/catalogue/catalogue.h"
 #include "oracle/makehuman/makehuman_body.h"
 #include "oracle/makehuman/makehuman_model.h"
 #include "oracle/makehuman/makehuman_population.h"
 #include "oracle/truth/mesh_section.h"
+#include "oracle/truth/reference_measurements.h"
 #include "scanners/core/errors.h"
 #include "tests/support/test_support.h"
 
@@ -309,6 +313,37 @@ TEST(DefinedLandmarks, TheCalfIsTheBulgeOfTheLowerLeg) {
   EXPECT_GE(girth - narrowest, 3 - 0.5);
   for (double z = low; z <= narrowest_z; z += 1)
     EXPECT_LE(LegGirthAt(body, z, near), girth + 0.5) << z;
+}
+
+// The ankle girth by ISO 8559-1 is the minimum girth above the malleoli. On
+// these bodies the leg's section narrows for 40-80 mm above the outer ankle
+// bone (at the bone the horizontal plane also cuts the heel and instep and
+// its girth changes 2-4 mm per mm of height); the truth is the smallest
+// section of the band up to the calf, every millimetre.
+TEST(DefinedLandmarks, TheAnkleGirthIsTheNarrowestAboveTheMalleoli) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(MakeHumanDir(shared));
+  for (std::uint64_t seed : {1035, 1041}) {
+    MakeHumanBodyOptions o;
+    o.seed = seed;
+    o.population = "full";
+    const Body body = GenerateMakeHumanBody(o, &model);
+    const ReferenceMeasurements r =
+        ComputeReferenceMeasurements(ReferenceOptions(), Catalogue::Builtin(), body);
+    double truth = 0;
+    for (const ReferenceMeasurement& m : r.measurements)
+      if (m.name == "ankle_girth") truth = m.value_mm;
+    const Eigen::Vector3d ankle = At(body, "ankle_outside_right");
+    const double at_bone = LegGirthAt(body, ankle.z(), ankle);
+    double narrowest = at_bone;
+    for (double z = ankle.z(); z <= At(body, "calf_right").z(); z += 5)
+      narrowest =
+          std::min(narrowest, LegGirthAt(body, z, Eigen::Vector3d(ankle.x(), ankle.y(), z)));
+    std::printf("seed %d: ankle girth %.1f mm, at the bone %.1f, narrowest of a 5 mm sweep %.1f\n",
+                static_cast<int>(seed), truth, at_bone, narrowest);
+    EXPECT_LE(truth, narrowest + 0.01);
+    EXPECT_GT(at_bone - truth, 20);
+  }
 }
 
 }  // namespace

@@ -21,11 +21,13 @@ Vec Landmark(const Body& body, const std::string& name) {
   return PositionOf(body.mesh, it->second);
 }
 
-// The first datum point or axis point the body lacks, or "".
+// The first datum, axis or "narrowest_up_to" point the body lacks, or "".
 std::string MissingLandmark(const MeasurementDef& m, const Body& body) {
   for (const auto* list : {&m.datum, &m.axis})
     for (const std::string& name : *list)
       if (body.landmarks.find(name) == body.landmarks.end()) return name;
+  if (!m.narrowest_up_to.empty() && body.landmarks.find(m.narrowest_up_to) == body.landmarks.end())
+    return m.narrowest_up_to;
   return "";
 }
 
@@ -61,7 +63,7 @@ int LargestLoop(const std::vector<SectionLoop>& loops, const Vec& normal) {
 // points' centroid in the air between them, and the nearest loop would be
 // one breast. Otherwise the loop nearest the first datum point.
 int ChooseLoop(const std::vector<SectionLoop>& loops, const MeasurementDef& m, const Body& body,
-               const Vec& normal) {
+               const Vec& normal, const Vec& datum) {
   int chosen = -1;
   if (m.datum.size() > 1) {
     Vec centroid = Vec::Zero();
@@ -69,7 +71,7 @@ int ChooseLoop(const std::vector<SectionLoop>& loops, const MeasurementDef& m, c
     chosen = EnclosingLoop(loops, centroid / static_cast<double>(m.datum.size()), normal);
     if (chosen < 0 && IsTrunkGirth(m)) chosen = LargestLoop(loops, normal);
   }
-  return chosen >= 0 ? chosen : NearestLoop(loops, Landmark(body, m.datum[0]));
+  return chosen >= 0 ? chosen : NearestLoop(loops, datum);
 }
 
 // True when the loop reaches more than 30 mm beyond the datum points' x
@@ -85,14 +87,13 @@ bool ReachesPastDatum(const SectionLoop& loop, const MeasurementDef& m, const Bo
 
 // The section of a right-side limb girth on its limb's own faces (those
 // whose three vertices are that limb's, Body::limbs): every loop of it
-// within 100 mm of the datum point, merged. A posed limb that passes into
-// the trunk or the other leg makes one loop with it on the whole mesh; its
-// own surface still goes round it. False without limb labels, or when the
-// datum point's vertex is the trunk's or no loop is near.
-bool LimbSection(const MeasurementDef& m, const Body& body, const Vec& point, const Vec& normal,
+// within 100 mm of `datum` (datum[0], or where the plane was moved to), merged. A posed limb that
+// passes into the trunk or the other leg makes one loop with it on the whole mesh; its own surface
+// still goes round it. False without limb labels, or when the datum point's vertex is the trunk's
+// or no loop is near.
+bool LimbSection(const Body& body, const Vec& point, const Vec& normal, const Vec& datum,
                  SectionLoop* out) {
   if (body.limbs.size() != static_cast<std::size_t>(body.mesh.num_vertices())) return false;
-  const Vec datum = Landmark(body, m.datum[0]);
   Eigen::Index nearest = 0;
   (body.mesh.vertices.rowwise() - datum.transpose()).rowwise().squaredNorm().minCoeff(&nearest);
   const BodyLimb limb = body.limbs[static_cast<std::size_t>(nearest)];
@@ -118,46 +119,91 @@ bool LimbSection(const MeasurementDef& m, const Body& body, const Vec& point, co
   return true;
 }
 
-ReferenceMeasurement Girth(const ReferenceOptions& options, const MeasurementDef& m,
-                           const Body& body) {
-  ReferenceMeasurement out{m.name, m.kind, 0, {}, {}};
-  auto [point, normal] = GirthPlaneOf(m, body);
+// The loop a girth measures in the plane (point, normal), with `datum` the
+// point it passes by (datum[0], raised to the plane by "narrowest_up_to").
+struct GirthLoop {
+  SectionLoop loop;
+  Vec point = Vec::Zero();  // the plane's point, lowered by arms "lower"
+  double datum_distance = 0;
+  bool limb_only = false;
+};
+
+GirthLoop LoopOf(const MeasurementDef& m, const Body& body, Vec point, const Vec& normal,
+                 const Vec& datum) {
   std::vector<SectionLoop> loops = SectionLoops(body.mesh, point, normal);
   if (loops.empty()) throw InternalError("reference " + m.name + ": the plane misses the body");
-  int chosen = ChooseLoop(loops, m, body, normal);
+  int chosen = ChooseLoop(loops, m, body, normal, datum);
   // "lower": step down until the trunk's section is free of the arms.
   for (int step = 0; m.arms == "lower" && step < 100 &&
                      ReachesPastDatum(loops[static_cast<std::size_t>(chosen)], m, body);
        ++step) {
     point.z() -= 1;
     loops = SectionLoops(body.mesh, point, normal);
-    chosen = ChooseLoop(loops, m, body, normal);
+    chosen = ChooseLoop(loops, m, body, normal, datum);
   }
   // Round the trunk the tape also passes over the loops the plane cuts
   // apart in front of or behind it (a heavy breast hanging over the chest).
-  const bool trunk = IsTrunkGirth(m);
-  const std::vector<int> parts = trunk ? TrunkLoopIndices(loops, chosen) : std::vector<int>{chosen};
-  SectionLoop loop = MergedLoops(loops, parts);
-  double datum_distance = std::numeric_limits<double>::infinity();
+  const std::vector<int> parts =
+      IsTrunkGirth(m) ? TrunkLoopIndices(loops, chosen) : std::vector<int>{chosen};
+  GirthLoop out;
+  out.loop = MergedLoops(loops, parts);
+  out.point = point;
+  out.datum_distance = std::numeric_limits<double>::infinity();
   for (int i : parts)
-    datum_distance = std::min(datum_distance, DistanceToLoop(loops[static_cast<std::size_t>(i)],
-                                                             Landmark(body, m.datum[0])));
-  if (m.side == "right" && loop.points.col(0).minCoeff() <= 0 &&
-      LimbSection(m, body, point, normal, &loop)) {
-    out.flags.push_back("section_limb_only");
-    datum_distance = (loop.points.rowwise() - Landmark(body, m.datum[0]).transpose())
-                         .rowwise()
-                         .norm()
-                         .minCoeff();
+    out.datum_distance =
+        std::min(out.datum_distance, DistanceToLoop(loops[static_cast<std::size_t>(i)], datum));
+  if (m.side == "right" && out.loop.points.col(0).minCoeff() <= 0 &&
+      LimbSection(body, point, normal, datum, &out.loop)) {
+    out.limb_only = true;
+    out.datum_distance =
+        (out.loop.points.rowwise() - datum.transpose()).rowwise().norm().minCoeff();
   }
-  out.value_mm = LoopHullPerimeter(loop, normal);
-  if (!loop.closed) out.flags.push_back("section_open");
-  if (datum_distance > options.datum_tolerance_mm) out.flags.push_back("datum_off_section");
-  if (!m.arms.empty() && ReachesPastDatum(loop, m, body))
+  return out;
+}
+
+// "narrowest_up_to": the height of the smallest section from datum[0]'s
+// height up to that landmark's, every 1 mm on the exact mesh, then refined
+// to 0.01 mm within the millimetre either side (a ternary search).
+double NarrowestZ(const MeasurementDef& m, const Body& body, const Vec& normal) {
+  const Vec datum = Landmark(body, m.datum[0]);
+  const double top = Landmark(body, m.narrowest_up_to).z();
+  auto girth = [&](double z) {
+    const Vec at(datum.x(), datum.y(), z);
+    return LoopHullPerimeter(LoopOf(m, body, at, normal, at).loop, normal);
+  };
+  double best = std::numeric_limits<double>::infinity(), best_z = datum.z();
+  for (double z = datum.z(); z <= top; z += 1) {
+    const double g = girth(z);
+    if (g < best) best = g, best_z = z;
+  }
+  double lo = std::max(datum.z(), best_z - 1), hi = std::min(top, best_z + 1);
+  while (hi - lo > 0.01) {
+    const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
+    if (girth(a) < girth(b))
+      hi = b;
+    else
+      lo = a;
+  }
+  const double refined = 0.5 * (lo + hi);
+  return girth(refined) < best ? refined : best_z;
+}
+
+ReferenceMeasurement Girth(const ReferenceOptions& options, const MeasurementDef& m,
+                           const Body& body) {
+  ReferenceMeasurement out{m.name, m.kind, 0, {}, {}};
+  auto [point, normal] = GirthPlaneOf(m, body);
+  Vec datum = Landmark(body, m.datum[0]);
+  if (!m.narrowest_up_to.empty()) point.z() = datum.z() = NarrowestZ(m, body, normal);
+  const GirthLoop g = LoopOf(m, body, point, normal, datum);
+  if (g.limb_only) out.flags.push_back("section_limb_only");
+  out.value_mm = LoopHullPerimeter(g.loop, normal);
+  if (!g.loop.closed) out.flags.push_back("section_open");
+  if (g.datum_distance > options.datum_tolerance_mm) out.flags.push_back("datum_off_section");
+  if (!m.arms.empty() && ReachesPastDatum(g.loop, m, body))
     out.flags.push_back("section_includes_arms");
-  if (m.side == "right" && loop.points.col(0).minCoeff() <= 0)
+  if (m.side == "right" && g.loop.points.col(0).minCoeff() <= 0)
     out.flags.push_back("section_crosses_midline");
-  if (options.keep_geometry) out.geometry = HullPolygon(loop, normal);
+  if (options.keep_geometry) out.geometry = HullPolygon(g.loop, normal);
   return out;
 }
 
