@@ -76,9 +76,15 @@ bool CrotchFromProfile(const Context& c, double level, Eigen::Vector3d* out) {
 }
 
 // Whether the body's front at x = 0 in the slice at height z is a crease
-// between two thighs that touch: the three most forward points within 6 mm
-// of x = 0 (trunk and legs) have normals turned sideways (mean |n_x| > 0.45:
-// the crease's walls face each other), or no point lies there in front.
+// between two thighs that touch. Two signs, either enough:
+//  - the walls: the three most forward points within 6 mm of x = 0 (trunk
+//    and legs) have normals turned sideways (mean |n_x| > 0.45: the crease's
+//    walls face each other), or no point lies there in front;
+//  - the notch: the most forward point within 6 mm of x = 0 lies more than
+//    10 mm behind the most forward points 12-24 mm either side. A tight
+//    crease's bottom is rounded and faces forward, and a normal estimated
+//    across it averages its two walls, so the walls' sign misses it; over
+//    the pubis the front is a dome or a shallow trough between the thighs.
 // Over the pubis and the belly the front faces forward or down (|n_x| small).
 // Fewer than three points within 6 mm widen the strip to 10, then 14 mm: a
 // sparse scan (60k points) has one or two there on the pubis as often as
@@ -87,12 +93,17 @@ bool CrotchFromProfile(const Context& c, double level, Eigen::Vector3d* out) {
 // whose normals still face sideways.
 bool FrontIsCrease(const Context& c, double z) {
   std::vector<int> near;
-  double middle = 0;
+  double middle = 0, front[2] = {-kInf, -kInf};
   for (int r : c.At(z).rows) {
     const Part p = c.PartOf(r);
     if (p == Part::kTrunk || p == Part::kLegRight || p == Part::kLegLeft) {
       middle += c.points(r, 1);
       if (std::abs(c.points(r, 0)) < 14) near.push_back(r);
+      const double ax = std::abs(c.points(r, 0));
+      if (ax >= 12 && ax < 24) {
+        double& f = front[c.points(r, 0) > 0 ? 0 : 1];
+        f = std::max(f, c.points(r, 1));
+      }
     }
   }
   middle /= std::max<double>(1, static_cast<double>(c.At(z).rows.size()));
@@ -106,9 +117,12 @@ bool FrontIsCrease(const Context& c, double z) {
   if (rows.size() < 3) return true;
   std::partial_sort(rows.begin(), rows.begin() + 3, rows.end(),
                     [&](int a, int b) { return c.points(a, 1) > c.points(b, 1); });
-  double nx = 0;
+  double nx = 0, centre = -kInf;
   for (int k = 0; k < 3; ++k) nx += std::abs(c.normals(rows[static_cast<size_t>(k)], 0)) / 3;
-  return nx > 0.45;
+  for (int r : near)
+    if (std::abs(c.points(r, 0)) < 6) centre = std::max(centre, c.points(r, 1));
+  const bool notch = std::isfinite(centre) && std::min(front[0], front[1]) > centre + 10;
+  return nx > 0.45 || notch;
 }
 
 }  // namespace

@@ -520,6 +520,19 @@ TEST(MakeHumanLandmarks, TPosedSideNeckOnTheNeck) {
                       20.0);
 }
 
+// Heavy thighs pressed together from the crotch to mid-thigh (full
+// population). The crease between them is too tight for the sensors, its
+// rounded bottom faces forward, and a normal estimated across it averages
+// its two walls: by the walls' normals alone the contact ended at its
+// bottom and the crotch landed 127 and 184 mm low on these seeds (not those
+// the notch rule was developed on). The crease is also a notch behind the
+// thighs' fronts either side.
+TEST(MakeHumanLandmarks, CrotchAboveThighsPressedTogether) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(shared / "data/bodies/makehuman");
+  ExpectHeightsWithin(&model, {2023, 3016}, "arms-30", {"crotch"}, 20.0);
+}
+
 // A raised arm meets the trunk through a fillet of skin that the body
 // structure's armpit corner (where the side turns vertical, 50-90 mm under
 // the apex on these bodies) leaves to the arm; the chest's section just under
