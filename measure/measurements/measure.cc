@@ -151,6 +151,10 @@ std::vector<bool> LeaveOut(const MeasurementDef& m, const PointCloud& cloud,
     for (std::size_t i = 0; i < parts.size(); ++i) out[i] = parts[i] != part;
     return out;
   }
+  // A right-side limb girth whose datum point lies on the trunk's side of
+  // the part boundary (a thigh point at the crotch's level) still never
+  // takes in the left leg.
+  if (!trunk && other_leg == ScanPart::kNone && m.side == "right") other_leg = ScanPart::kLegLeft;
   for (std::size_t i = 0; i < parts.size(); ++i)
     out[i] = trunk ? parts[i] != ScanPart::kTrunk : IsArm(parts[i]) || parts[i] == other_leg;
   *one_part = trunk;

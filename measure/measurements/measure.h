@@ -64,7 +64,7 @@ struct MeasureOptions {
   double lower_step_mm = 2;      // default 2 mm: arms "lower" plane step
   double max_lower_mm = 100;     // default 100 mm: arms "lower" limit
   double narrowest_step_mm = 2;  // default 2 mm: level step of a "narrowest_up_to" girth
-  int narrowest_window = 5;      // default 5: levels averaged there before the smallest is taken
+  int narrowest_window = 5;      // default 5: levels whose median is compared there
   double uncertain_confidence = 0.5;  // default 0.5: below it a landmark is "uncertain"
   int geodesic_threads = 2;           // default 2: threads for the geodesic lengths (each
                                       // beyond the first builds its own grid)

@@ -395,27 +395,62 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
   return out;
 }
 
+namespace {
+
+// The points of `cloud` with z in [lo, hi] (mm), with their normals (when
+// given) and leave_out flags: a search over many levels slices this band
+// instead of the whole cloud.
+struct Band {
+  Eigen::MatrixX3d points, normals;
+  std::vector<bool> leave_out;
+};
+
+Band BandOf(const Eigen::MatrixX3d& cloud, const Eigen::MatrixX3d& normals,
+            const std::vector<bool>& leave_out, double lo, double hi) {
+  std::vector<Eigen::Index> rows;
+  for (Eigen::Index r = 0; r < cloud.rows(); ++r)
+    if (cloud(r, 2) >= lo && cloud(r, 2) <= hi) rows.push_back(r);
+  const bool with_normals = normals.rows() == cloud.rows();
+  Band band;
+  band.points.resize(static_cast<Eigen::Index>(rows.size()), 3);
+  band.normals.resize(with_normals ? band.points.rows() : 0, 3);
+  band.leave_out.resize(leave_out.empty() ? 0 : rows.size());
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const Eigen::Index k = static_cast<Eigen::Index>(i);
+    band.points.row(k) = cloud.row(rows[i]);
+    if (with_normals) band.normals.row(k) = normals.row(rows[i]);
+    if (!leave_out.empty()) band.leave_out[i] = leave_out[static_cast<size_t>(rows[i])];
+  }
+  return band;
+}
+
+}  // namespace
+
 double NarrowestSectionZ(const SectionGirthOptions& options, const Eigen::MatrixX3d& cloud,
                          const Eigen::MatrixX3d& normals, double z_from, double z_to,
                          double step_mm, int window, const Eigen::MatrixX3d& anchors,
                          const std::vector<bool>& leave_out) {
   if (!(step_mm > 0) || !(z_to > z_from) || window < 1) return z_from;
+  // No slab is thicker than the widest one.
+  const double margin = std::max(options.half_thickness_mm, options.max_half_thickness_mm) + 1;
+  const Band band = BandOf(cloud, normals, leave_out, z_from - margin, z_to + margin);
   std::vector<double> z, girth;
   Eigen::MatrixX3d at = anchors;
   for (double level = z_from; level <= z_to; level += step_mm) {
     at.col(2).setConstant(level);
     const SectionGirth s =
-        MeasureSectionGirth(options, cloud, normals, Eigen::Vector3d(0, 0, level),
-                            Eigen::Vector3d::UnitZ(), at, leave_out);
+        MeasureSectionGirth(options, band.points, band.normals, Eigen::Vector3d(0, 0, level),
+                            Eigen::Vector3d::UnitZ(), at, band.leave_out);
     if (s.points == 0) continue;
     z.push_back(level), girth.push_back(s.girth_mm);
   }
   const int n = static_cast<int>(z.size()), half = window / 2;
   double best = std::numeric_limits<double>::infinity(), best_z = z_from;
   for (int i = half; i + half < n; ++i) {
-    double mean = 0;
-    for (int k = i - half; k <= i + half; ++k) mean += girth[static_cast<size_t>(k)];
-    if (mean < best) best = mean, best_z = z[static_cast<size_t>(i)];
+    std::vector<double> near(girth.begin() + i - half, girth.begin() + i + half + 1);
+    std::nth_element(near.begin(), near.begin() + half, near.end());
+    if (near[static_cast<size_t>(half)] < best)
+      best = near[static_cast<size_t>(half)], best_z = z[static_cast<size_t>(i)];
   }
   return best_z;
 }

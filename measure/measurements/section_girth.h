@@ -95,9 +95,10 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
 
 // The height (mm) in [z_from, z_to] of the smallest horizontal section: the
 // part's girth every step_mm (each with the anchors moved to that height),
-// averaged over `window` neighbouring levels so that one noisy section does
-// not decide, and the level of the smallest mean. z_from when no level cuts
-// the cloud or z_to <= z_from. Arguments as MeasureSectionGirth.
+// the median of `window` neighbouring levels so that one noisy or broken
+// section (a sliver the anchor picks between two holes) does not decide,
+// and the level of the smallest median. z_from when no level cuts the cloud
+// or z_to <= z_from. Arguments as MeasureSectionGirth.
 double NarrowestSectionZ(const SectionGirthOptions& options, const Eigen::MatrixX3d& cloud,
                          const Eigen::MatrixX3d& normals, double z_from, double z_to,
                          double step_mm, int window, const Eigen::MatrixX3d& anchors,
