@@ -186,17 +186,21 @@ Catalogue Catalogue::FromJson(const json& document, const std::string& source) {
   for (std::size_t i = 0; i < document["measurements"].size(); ++i) {
     const std::string where = source + ": measurement " + std::to_string(i + 1);
     MeasurementDef m = ParseMeasurement(document["measurements"][i], where);
-    for (const auto* list : {&m.datum, &m.axis})
-      for (const std::string& name : *list)
-        if (!c.HasLandmark(name))
-          throw InputError(where + " ('" + m.name + "'): unknown landmark '" + name + "'");
-    if (!m.narrowest_up_to.empty() && !c.HasLandmark(m.narrowest_up_to))
-      throw InputError(where + " ('" + m.name + "'): unknown landmark '" + m.narrowest_up_to + "'");
+    for (const std::string& name : ReferencedLandmarks(m))
+      if (!c.HasLandmark(name))
+        throw InputError(where + " ('" + m.name + "'): unknown landmark '" + name + "'");
     if (!c.measurement_index_.emplace(m.name, c.measurements_.size()).second)
       throw InputError(where + ": duplicate measurement name '" + m.name + "'");
     c.measurements_.push_back(std::move(m));
   }
   return c;
+}
+
+std::vector<std::string> ReferencedLandmarks(const MeasurementDef& m) {
+  std::vector<std::string> out = m.datum;
+  out.insert(out.end(), m.axis.begin(), m.axis.end());
+  if (!m.narrowest_up_to.empty()) out.push_back(m.narrowest_up_to);
+  return out;
 }
 
 const Catalogue& Catalogue::Builtin() {

@@ -76,6 +76,10 @@ struct MeasurementDef {
   std::string valentina, freesewing;                    // empty where none exists
 };
 
+// The landmarks `m` is measured from: its datum points, its axis points and
+// the top of a `narrowest_up_to` search, in that order (names may repeat).
+std::vector<std::string> ReferencedLandmarks(const MeasurementDef& m);
+
 // Whether `m` is a girth round the trunk: a horizontal section measured
 // across the body (side "centre" or "both": bust, chest, under-bust, waist,
 // middle hip, hip). The neck's plane runs through its datum points.

@@ -98,8 +98,8 @@ bool FrontIsCrease(const Context& c, double z) {
     const Part p = c.PartOf(r);
     if (p == Part::kTrunk || p == Part::kLegRight || p == Part::kLegLeft) {
       middle += c.points(r, 1);
-      if (std::abs(c.points(r, 0)) < 14) near.push_back(r);
       const double ax = std::abs(c.points(r, 0));
+      if (ax < 14) near.push_back(r);
       if (ax >= 12 && ax < 24) {
         double& f = front[c.points(r, 0) > 0 ? 0 : 1];
         f = std::max(f, c.points(r, 1));

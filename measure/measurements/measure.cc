@@ -31,18 +31,9 @@ const Vec& Position(const LandmarkSet& set, const std::string& name) {
   return it->second.position_mm;
 }
 
-// The landmarks `m` is measured from: its datum and axis points and the
-// top of a "narrowest_up_to" search.
-std::vector<std::string> Referenced(const MeasurementDef& m) {
-  std::vector<std::string> out = m.datum;
-  out.insert(out.end(), m.axis.begin(), m.axis.end());
-  if (!m.narrowest_up_to.empty()) out.push_back(m.narrowest_up_to);
-  return out;
-}
-
 // The first referenced point the set lacks, with the detector's reason, or "".
 std::string MissingReason(const MeasurementDef& m, const LandmarkSet& set) {
-  for (const std::string& name : Referenced(m)) {
+  for (const std::string& name : ReferencedLandmarks(m)) {
     if (set.points.count(name)) continue;
     const auto why = set.missing.find(name);
     return "no landmark '" + name + "'" +
@@ -55,7 +46,7 @@ std::string MissingReason(const MeasurementDef& m, const LandmarkSet& set) {
 void FlagUncertain(const MeasureOptions& o, const MeasurementDef& m, const LandmarkSet& set,
                    Measurement* out) {
   std::set<std::string> seen;
-  for (const std::string& name : Referenced(m)) {
+  for (const std::string& name : ReferencedLandmarks(m)) {
     const Landmark& l = set.points.at(name);
     bool doubtful = l.confidence < o.uncertain_confidence;
     for (const std::string& f : l.flags) doubtful |= f != "override";

@@ -21,13 +21,10 @@ Vec Landmark(const Body& body, const std::string& name) {
   return PositionOf(body.mesh, it->second);
 }
 
-// The first datum, axis or "narrowest_up_to" point the body lacks, or "".
+// The first landmark `m` is measured from that the body lacks, or "".
 std::string MissingLandmark(const MeasurementDef& m, const Body& body) {
-  for (const auto* list : {&m.datum, &m.axis})
-    for (const std::string& name : *list)
-      if (body.landmarks.find(name) == body.landmarks.end()) return name;
-  if (!m.narrowest_up_to.empty() && body.landmarks.find(m.narrowest_up_to) == body.landmarks.end())
-    return m.narrowest_up_to;
+  for (const std::string& name : ReferencedLandmarks(m))
+    if (body.landmarks.find(name) == body.landmarks.end()) return name;
   return "";
 }
 
@@ -87,10 +84,11 @@ bool ReachesPastDatum(const SectionLoop& loop, const MeasurementDef& m, const Bo
 
 // The section of a right-side limb girth on its limb's own faces (those
 // whose three vertices are that limb's, Body::limbs): every loop of it
-// within 100 mm of `datum` (datum[0], or where the plane was moved to), merged. A posed limb that
-// passes into the trunk or the other leg makes one loop with it on the whole mesh; its own surface
-// still goes round it. False without limb labels, or when the datum point's vertex is the trunk's
-// or no loop is near.
+// within 100 mm of `datum` (datum[0], or raised to the plane by
+// "narrowest_up_to"), merged. A posed limb that passes into the trunk or the
+// other leg makes one loop with it on the whole mesh; its own surface still
+// goes round it. False without limb labels, or when the datum point's vertex
+// is the trunk's or no loop is near.
 bool LimbSection(const Body& body, const Vec& point, const Vec& normal, const Vec& datum,
                  SectionLoop* out) {
   if (body.limbs.size() != static_cast<std::size_t>(body.mesh.num_vertices())) return false;
@@ -123,7 +121,6 @@ bool LimbSection(const Body& body, const Vec& point, const Vec& normal, const Ve
 // point it passes by (datum[0], raised to the plane by "narrowest_up_to").
 struct GirthLoop {
   SectionLoop loop;
-  Vec point = Vec::Zero();  // the plane's point, lowered by arms "lower"
   double datum_distance = 0;
   bool limb_only = false;
 };
@@ -147,7 +144,6 @@ GirthLoop LoopOf(const MeasurementDef& m, const Body& body, Vec point, const Vec
       IsTrunkGirth(m) ? TrunkLoopIndices(loops, chosen) : std::vector<int>{chosen};
   GirthLoop out;
   out.loop = MergedLoops(loops, parts);
-  out.point = point;
   out.datum_distance = std::numeric_limits<double>::infinity();
   for (int i : parts)
     out.datum_distance =
