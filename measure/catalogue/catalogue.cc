@@ -92,7 +92,9 @@ void CheckArity(const MeasurementDef& m, const std::string& where) {
       if (m.plane == GirthPlane::kThroughPoints) ok = ok && n == 3;
       break;
     case MeasurementMethod::kGeodesic:
-      ok = ok && n >= 2 && m.kind == MeasurementKind::kLength;
+      // A girth over the skin is a closed chain: it ends where it starts.
+      ok = ok && n >= 2 && m.kind != MeasurementKind::kHeight;
+      if (m.kind == MeasurementKind::kGirth) ok = ok && n >= 4 && m.datum.front() == m.datum.back();
       break;
     case MeasurementMethod::kBreadth:
       ok = ok && n == 2 && m.kind == MeasurementKind::kLength;

@@ -33,6 +33,7 @@ std::string MethodText(const MeasurementDef& m) {
         return "hull of the smallest horizontal section up to " + Code(m.narrowest_up_to);
       return "hull of the horizontal section";
     case MeasurementMethod::kGeodesic:
+      if (m.kind == MeasurementKind::kGirth) return "closed geodesic chain (a tape over the skin)";
       return m.to_floor ? "geodesic chain, + height of the last point" : "geodesic chain";
     case MeasurementMethod::kBreadth:
       return "horizontal straight distance";

@@ -136,6 +136,18 @@ TEST(Catalogue, MalformedDocumentsAreInputErrors) {
   bad = good;
   bad["measurements"][ankle]["side"] = "centre";
   EXPECT_THROW(Catalogue::FromJson(bad, "not a limb"), InputError);
+  // A girth over the skin is a closed chain of at least three points.
+  std::size_t neck = 0;
+  while (good["measurements"][neck]["name"] != "neck_girth") ++neck;
+  const MeasurementDef& loop = Catalogue::Builtin().Measurement("neck_girth");
+  EXPECT_EQ(loop.method, MeasurementMethod::kGeodesic);
+  EXPECT_EQ(loop.datum.front(), loop.datum.back());
+  bad = good;
+  bad["measurements"][neck]["datum"].erase(bad["measurements"][neck]["datum"].size() - 1);
+  EXPECT_THROW(Catalogue::FromJson(bad, "open loop"), InputError);
+  bad = good;
+  bad["measurements"][neck]["datum"] = {"front_neck", "back_neck", "front_neck"};
+  EXPECT_THROW(Catalogue::FromJson(bad, "two-point loop"), InputError);
 }
 
 // docs/measurements.md is generated from the catalogue; this fails when it is

@@ -236,15 +236,21 @@ Vec StartDirection(const Eigen::MatrixX3d& path, double reach_mm = 20) {
 // SD (mm) of a geodesic chain from its datum points: each end moves the
 // length by its SD along the path; an inner point by its SD times the turn
 // of the path there (|direction in - direction out|).
+// A closed chain (a girth over the skin) has no ends: its first point is
+// an inner point, counted once.
 double ChainSd(const MeasureOptions& o, const MeasurementDef& m, const LandmarkSet& set,
                const std::vector<Eigen::MatrixX3d>& pieces) {
+  const bool closed = m.datum.size() > 2 && m.datum.front() == m.datum.back();
+  const std::size_t n = m.datum.size() - (closed ? 1 : 0);
   double var = 0;
-  for (std::size_t i = 0; i < m.datum.size(); ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     const double sigma = Sigma(o.uncertainty, set, m.datum[i]);
     double weight = 1;
-    if (i > 0 && i + 1 < m.datum.size() && i < pieces.size()) {
+    const std::size_t before = i > 0 ? i - 1 : pieces.size() - 1;
+    if ((closed || (i > 0 && i + 1 < m.datum.size())) && i < pieces.size() &&
+        before < pieces.size()) {
       const Vec out = StartDirection(pieces[i]);
-      const Vec in = -StartDirection(pieces[i - 1].colwise().reverse());
+      const Vec in = -StartDirection(pieces[before].colwise().reverse());
       weight = (out - in).norm();
     }
     var += weight * weight * sigma * sigma;
@@ -462,7 +468,7 @@ MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue,
                 ? landmarks.parts
                 : FindBodyParts(body_cloud);
   std::int64_t girths = 0, n_girths = 0;
-  for (const MeasurementDef* m : todo) n_girths += m->kind == MeasurementKind::kGirth;
+  for (const MeasurementDef* m : todo) n_girths += m->method == MeasurementMethod::kSectionHull;
   ProgressBegin(progress, "girths", n_girths);
   for (const MeasurementDef* m : todo) {
     if (m->method != MeasurementMethod::kSectionHull) continue;
@@ -486,7 +492,7 @@ MeasureResult Measure(const MeasureOptions& options, const Catalogue& catalogue,
   for (const MeasurementDef* m : todo) {
     if (m->kind == MeasurementKind::kHeight)
       attempt(*m, [&] { return Height(options, *m, landmarks, scan); });
-    else if (m->kind == MeasurementKind::kLength)
+    else if (m->method != MeasurementMethod::kSectionHull)
       attempt(*m, [&] { return Length(options, *m, landmarks, paths, index, scan); });
   }
   result.stages.push_back(other_clock.Stop());

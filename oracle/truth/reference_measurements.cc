@@ -355,7 +355,10 @@ ReferenceMeasurements ComputeReferenceMeasurements(const ReferenceOptions& optio
   for (const MeasurementDef* m : todo) {
     switch (m->kind) {
       case MeasurementKind::kGirth:
-        result.measurements.push_back(Girth(options, *m, body));
+        if (m->method == MeasurementMethod::kGeodesic)
+          result.measurements.push_back(Length(options, *m, body, geodesics));
+        else
+          result.measurements.push_back(Girth(options, *m, body));
         break;
       case MeasurementKind::kLength:
         result.measurements.push_back(Length(options, *m, body, geodesics));

@@ -105,7 +105,7 @@ TEST(MeasureCli, AMeshExportIsSampledOverItsFaces) {
     const std::string name = m["name"];
     auto it = body.parameters.find(name + "_analytic_mm");
     if (it == body.parameters.end()) it = body.parameters.find(name + "_right_analytic_mm");
-    if (it == body.parameters.end() || name == "neck_girth") continue;  // neck: tilted plane
+    if (it == body.parameters.end() || name == "neck_girth") continue;  // a loop, not the ring
     const bool large = name != "thigh_girth" && name != "knee_girth" && name != "calf_girth" &&
                        name != "ankle_girth" && name.find("arm") == std::string::npos &&
                        name != "elbow_girth" && name != "wrist_girth";
