@@ -15,6 +15,12 @@ namespace {
 // Cervicale below the narrowest neck section, as a share of stature.
 constexpr double kBackNeckBelowNarrowest = 0.015;
 
+// The side neck point's corner: the centre of the stations within this
+// depth (mm) of the deepest (TopCentre). A frame tilted by 1 deg changes the
+// depths 30 mm apart by 0.5 mm, so the deepest station alone jumps between
+// the bumps of a rounded corner.
+constexpr double kCornerTopMm = 2;
+
 struct Neck {
   double z = 0;  // narrowest section above the shoulders
   double y = 0;  // its centroid's y
@@ -102,8 +108,8 @@ std::vector<double> DepthProfile(const std::vector<Eigen::Vector2d>& tz, size_t 
 // its depth below the chord is flat over a few centimetres and single noisy
 // points would pick any of them: the depth is taken as the median per 3 mm
 // of chord, smoothed over three bins (DepthProfile), and the corner is the
-// vertex of that profile's parabola around its deepest bin
-// (profile_extreme.h).
+// centre of that profile's top (TopCentre, profile_extreme.h): the deepest
+// bin alone jumps between the bumps of the flat top.
 bool SideNeck(const Context& c, int sign, const Neck& neck, double top_z,
               const Eigen::Vector3d& acromion, Eigen::Vector3d* out) {
   double top_x = -kInf;
@@ -133,12 +139,11 @@ bool SideNeck(const Context& c, int sign, const Neck& neck, double top_z,
   const std::vector<double> depth = DepthProfile(tz, bins, kBinMm);
   ProfileExtremeOptions corner;
   corner.minimum = false;
-  corner.half_window = 2;
   const size_t best = BestSample(corner, depth, std::vector<bool>(bins, true));
   if (best == bins) return false;
   std::vector<double> at(bins);
   for (size_t k = 0; k < bins; ++k) at[k] = (static_cast<double>(k) + 0.5) * kBinMm;
-  const double t = ProfileExtreme(corner, at, depth, best);
+  const double t = TopCentre(corner, at, depth, kCornerTopMm);
   const size_t k = std::min(bins - 2, static_cast<size_t>(t / kBinMm));
   const double d = std::isfinite(depth[k]) ? depth[k] : depth[best];
   const Eigen::Vector2d xz = p1 + t * along + d * down;

@@ -579,15 +579,18 @@ TEST(MakeHumanLandmarks, CalfIsTheBulgeNotTheWideningUnderTheKnee) {
                       30.0);
 }
 
-// One body scanned six times (other noise seeds): the points defined on a
-// flat stretch of a profile (the side neck on a neck-shoulder line nearly
-// parallel to its chord, the rounded shoulder corner, the waist's flat
-// girth minimum, the bottom of the front neck's notch) stay put instead of
-// following the noise. Measured height ranges over these six scans: side
-// neck 7-8 mm, shoulder 2-3, waist 8, front neck 4 (shoulder x range 4 mm);
-// taking the single best sample or point instead gave side neck 12-20,
-// shoulder 17-24, waist 16 and front neck 10 (shoulder x range 21-24 mm). The repeatability target
-// itself (SD <= 1 mm per height) is measured by `bespoke accuracy --repeat-body`.
+// One body scanned six times (other noise seeds and rigid poses): the
+// points defined on a flat stretch of a profile (the side neck on a
+// neck-shoulder line nearly parallel to its chord, the rounded shoulder
+// corner, the waist's flat girth minimum, the bottom of the front neck's
+// notch) stay put instead of following the noise. Measured ranges over these
+// six scans: side neck x 3-6 mm and height 3-4 mm (the deepest station of
+// its corner profile instead of the centre of its top: x 12-15, height 7-8),
+// shoulder height 2-3, waist 8, front neck 4 (shoulder x range 4 mm); taking
+// the single best sample or point instead of a fit gave shoulder 17-24,
+// waist 16 and front neck 10 (shoulder x range 21-24 mm). The repeatability
+// target itself (SD <= 1 mm per height) is measured by
+// `bespoke accuracy --repeat-body`.
 TEST(MakeHumanLandmarks, SameBodyScannedAgainKeepsItsPoints) {
   BESPOKE_REQUIRE_SHARED(shared);
   MakeHumanModel model(shared / "data/bodies/makehuman");
@@ -615,7 +618,8 @@ TEST(MakeHumanLandmarks, SameBodyScannedAgainKeepsItsPoints) {
                 hi.y() - lo.y(), hi.z() - lo.z());
     EXPECT_LE(hi.z() - lo.z(), 11.0) << name << " height range (mm)";
     // The shoulder's corner runs along x as much as along z.
-    if (StartsWith(name, "shoulder")) {
+    // So does the side neck's, along the slope of the shoulder.
+    if (StartsWith(name, "shoulder") || StartsWith(name, "side_neck")) {
       EXPECT_LE(hi.x() - lo.x(), 8.0) << name << " x range (mm)";
     }
   }

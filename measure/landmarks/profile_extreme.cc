@@ -38,6 +38,22 @@ double ProfileExtreme(const ProfileExtremeOptions& options, const std::vector<do
   return std::clamp(at[best] - coef(1) / (2 * coef(0)), left, right);
 }
 
+double TopCentre(const ProfileExtremeOptions& options, const std::vector<double>& at,
+                 const std::vector<double>& value, double depth) {
+  if (at.size() != value.size() || !(depth > 0))
+    throw InternalError("TopCentre: sizes differ or depth <= 0");
+  const size_t best = BestSample(options, value, std::vector<bool>(value.size(), true));
+  if (best == value.size()) return std::numeric_limits<double>::quiet_NaN();
+  const double sign = options.minimum ? -1.0 : 1.0;
+  const double line = sign * value[best] - depth;
+  double sum = 0, weight = 0;
+  for (size_t k = 0; k < value.size(); ++k) {
+    const double w = std::isfinite(value[k]) ? sign * value[k] - line : 0.0;
+    if (w > 0) sum += w * at[k], weight += w;
+  }
+  return sum / weight;
+}
+
 std::vector<double> WindowMean(const std::vector<double>& value, size_t half, int min_count) {
   std::vector<double> out(value.size(), std::numeric_limits<double>::quiet_NaN());
   for (size_t k = half; k + half < value.size(); ++k) {

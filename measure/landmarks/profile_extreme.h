@@ -32,6 +32,17 @@ struct ProfileExtremeOptions {
 double ProfileExtreme(const ProfileExtremeOptions& options, const std::vector<double>& at,
                       const std::vector<double>& value, size_t best);
 
+// The weighted centre of a profile's top: the mean abscissa of the finite
+// samples within `depth` of the extreme, each weighted by how far it passes
+// that line (value - (max - depth) for a maximum). On a rounded extreme the
+// profile is flat over several samples and the noise picks any of them as
+// the best (and then jumps between two near-equal bumps); the centre moves
+// continuously with the samples. Returns NaN when no sample is finite.
+// - `at`, `value`: #S each (mm; any unit for value, `depth` in it, > 0).
+// Throws InternalError when the sizes differ or depth <= 0.
+double TopCentre(const ProfileExtremeOptions& options, const std::vector<double>& at,
+                 const std::vector<double>& value, double depth);
+
 // A profile smoothed across gaps: at each sample the mean of the finite
 // samples within `half` of it (#S); NaN where fewer than `min_count` are
 // finite or the window runs off either end.

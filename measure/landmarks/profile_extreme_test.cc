@@ -67,6 +67,46 @@ TEST(ProfileExtreme, KeepsTheSampleWhereTheFitCannotHelp) {
   EXPECT_THROW(ProfileExtreme({}, at, value, 5), InternalError);
 }
 
+TEST(TopCentre, IsTheExtremeOfASymmetricTop) {
+  std::vector<double> at, value;
+  Parabola(&at, &value, 0, 1);
+  // Samples symmetric about 1075 with NaN gaps ignored: the centre is 1075.
+  std::vector<double> top{0, 1, 3, 4, 3, 1, 0}, x{1060, 1065, 1070, 1075, 1080, 1085, 1090};
+  ProfileExtremeOptions maximum;
+  maximum.minimum = false;
+  EXPECT_NEAR(TopCentre(maximum, x, top, 2), 1075, 1e-9);
+  top[0] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NEAR(TopCentre(maximum, x, top, 2), 1075, 1e-9);
+  // A minimum: the parabola's samples within 1 mm of the lowest are
+  // 1065-1080, weighted towards 1075.
+  const double c = TopCentre({}, at, value, 1);
+  EXPECT_GT(c, 1070);
+  EXPECT_LT(c, 1077);
+  EXPECT_THROW(TopCentre({}, at, value, 0), InternalError);
+  EXPECT_THROW(TopCentre({}, x, value, 1), InternalError);
+}
+
+TEST(TopCentre, MovesLittleWhereTheBestSampleJumps) {
+  // Two bumps 30 mm apart within 0.2 mm of each other: the best sample
+  // jumps between them as the second rises by 0.4 mm; the centre moves by
+  // less than a third of that jump.
+  std::vector<double> x;
+  for (double t = 0; t <= 60; t += 3) x.push_back(t);
+  auto profile = [&](double second) {
+    std::vector<double> v;
+    for (double t : x)
+      v.push_back(std::max(20 - 0.01 * (t - 15) * (t - 15), second - 0.01 * (t - 45) * (t - 45)));
+    return v;
+  };
+  ProfileExtremeOptions maximum;
+  maximum.minimum = false;
+  const std::vector<double> low = profile(19.8), high = profile(20.2);
+  const double jump = std::abs(x[BestSample(maximum, high, std::vector<bool>(x.size(), true))] -
+                               x[BestSample(maximum, low, std::vector<bool>(x.size(), true))]);
+  EXPECT_NEAR(jump, 30, 1e-9);
+  EXPECT_LT(std::abs(TopCentre(maximum, x, high, 2) - TopCentre(maximum, x, low, 2)), jump / 3);
+}
+
 TEST(ProfileExtreme, BestSampleIsTheFirstBestEligibleFiniteOne) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const std::vector<double> value{1, nan, 3, 0.5, 3, 0.5};
