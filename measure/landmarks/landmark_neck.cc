@@ -175,9 +175,45 @@ bool TPoseSideNeck(const Context& c, int sign, const Neck& neck, double z, Eigen
   return true;
 }
 
+// Distance (mm) from `q` to the convex polygon `hull` (indices into `xy`,
+// #N x 2), inside it.
+double HullDepth(const Eigen::MatrixX2d& xy, const std::vector<int>& hull,
+                 const Eigen::Vector2d& q) {
+  double depth = kInf;
+  for (size_t k = 0; k < hull.size(); ++k) {
+    const Eigen::Vector2d a = xy.row(hull[k]), b = xy.row(hull[(k + 1) % hull.size()]);
+    const double t =
+        std::clamp((q - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-12), 0.0, 1.0);
+    depth = std::min(depth, (a + t * (b - a) - q).norm());
+  }
+  return depth;
+}
+
+// The pocket's bottom: of `points` (with their `depths` inside the hull),
+// the one nearest the centre of those within kCornerTopMm of the deepest,
+// each weighted by how far it passes that line (as TopCentre does for a
+// profile: the deepest single point of a flat-bottomed pocket is noise).
+Eigen::Vector3d PocketBottom(const std::vector<Eigen::Vector3d>& points,
+                             const std::vector<double>& depths) {
+  const double line = *std::max_element(depths.begin(), depths.end()) - kCornerTopMm;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double weight = 0;
+  for (size_t i = 0; i < points.size(); ++i)
+    if (depths[i] > line) centre += (depths[i] - line) * points[i], weight += depths[i] - line;
+  centre /= weight;
+  size_t nearest = 0;
+  double nearest_d2 = kInf;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const double d2 = (points[i] - centre).squaredNorm();
+    if (depths[i] > line && d2 < nearest_d2) nearest = i, nearest_d2 = d2;
+  }
+  return points[nearest];
+}
+
 // Axilla fold: in the section a quarter of the way from the armpit up to
-// the shoulder point, the point deepest inside the section's convex hull
-// near the armpit, in front of it (front) or behind it (back).
+// the shoulder point, the bottom of the pocket inside the section's convex
+// hull near the armpit (PocketBottom), in front of it (front) or behind it
+// (back).
 void AxillaFolds(Context* c, int sign, const Eigen::Vector3d& acromion) {
   const ArmInfo& arm = c->arm[sign > 0 ? 0 : 1];
   const double z = arm.armpit_z + 0.25 * (acromion.z() - arm.armpit_z);
@@ -193,28 +229,21 @@ void AxillaFolds(Context* c, int sign, const Eigen::Vector3d& acromion) {
   if (hull.size() < 3) return;
   const double ax = sign * arm.armpit.x();
   for (bool front : {true, false}) {
-    double best = -1;
-    Eigen::Vector3d best_point;
+    std::vector<Eigen::Vector3d> points;
+    std::vector<double> depths;
     for (size_t i = 0; i < rows.size(); ++i) {
       const Eigen::Vector3d p = c->P(rows[i]);
       const double x = sign * p.x();
       if (x < ax - 70 || x > ax + 40 || (front ? p.y() <= arm.armpit.y() : p.y() >= arm.armpit.y()))
         continue;
-      double depth = kInf;
-      const Eigen::Vector2d q = p.head<2>();
-      for (size_t k = 0; k < hull.size(); ++k) {
-        const Eigen::Vector2d a = xy.row(hull[k]), b = xy.row(hull[(k + 1) % hull.size()]);
-        const double t =
-            std::clamp((q - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-12), 0.0, 1.0);
-        depth = std::min(depth, (a + t * (b - a) - q).norm());
-      }
-      if (depth > best) best = depth, best_point = p;
+      points.push_back(p);
+      depths.push_back(HullDepth(xy, hull, p.head<2>()));
     }
     const std::string name = std::string(front ? "axilla_front" : "axilla_back") + Side(sign);
-    if (best < 0)
+    if (points.empty())
       c->Missing(name, "no armpit fold in the section above the armpit");
     else
-      c->Put(name, best_point, arm.touching ? 0.3 : 0.7, "deepest_hull_pocket");
+      c->Put(name, PocketBottom(points, depths), arm.touching ? 0.3 : 0.7, "hull_pocket_bottom");
   }
 }
 
