@@ -94,7 +94,7 @@ void CheckArity(const MeasurementDef& m, const std::string& where) {
     case MeasurementMethod::kGeodesic:
       // A girth over the skin is a closed chain: it ends where it starts.
       ok = ok && n >= 2 && m.kind != MeasurementKind::kHeight;
-      if (m.kind == MeasurementKind::kGirth) ok = ok && n >= 4 && m.datum.front() == m.datum.back();
+      if (m.kind == MeasurementKind::kGirth) ok = ok && n >= 4 && IsClosedChain(m);
       break;
     case MeasurementMethod::kBreadth:
       ok = ok && n == 2 && m.kind == MeasurementKind::kLength;

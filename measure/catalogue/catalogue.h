@@ -80,9 +80,16 @@ struct MeasurementDef {
 // the top of a `narrowest_up_to` search, in that order (names may repeat).
 std::vector<std::string> ReferencedLandmarks(const MeasurementDef& m);
 
+// Whether `m` is a geodesic chain that ends where it starts (a girth over
+// the skin: the neck).
+inline bool IsClosedChain(const MeasurementDef& m) {
+  return m.method == MeasurementMethod::kGeodesic && m.datum.size() > 2 &&
+         m.datum.front() == m.datum.back();
+}
+
 // Whether `m` is a girth round the trunk: a horizontal section measured
 // across the body (side "centre" or "both": bust, chest, under-bust, waist,
-// middle hip, hip). The neck's plane runs through its datum points.
+// middle hip, hip).
 inline bool IsTrunkGirth(const MeasurementDef& m) {
   return m.kind == MeasurementKind::kGirth && m.plane == GirthPlane::kHorizontal &&
          (m.side == "centre" || m.side == "both");

@@ -15,11 +15,12 @@ namespace {
 // Cervicale below the narrowest neck section, as a share of stature.
 constexpr double kBackNeckBelowNarrowest = 0.015;
 
-// The side neck point's corner: the centre of the stations within this
-// depth (mm) of the deepest (TopCentre). A frame tilted by 1 deg changes the
-// depths 30 mm apart by 0.5 mm, so the deepest station alone jumps between
+// A flat top (the side neck's corner profile, an axilla fold's pocket): the
+// samples within this depth (mm) of the deepest, weighted by how far they
+// pass that line (TopCentre, PocketBottom). A frame tilted by 1 deg changes
+// depths 30 mm apart by 0.5 mm, so the deepest sample alone jumps between
 // the bumps of a rounded corner.
-constexpr double kCornerTopMm = 2;
+constexpr double kFlatTopMm = 2;
 
 struct Neck {
   double z = 0;  // narrowest section above the shoulders
@@ -143,7 +144,7 @@ bool SideNeck(const Context& c, int sign, const Neck& neck, double top_z,
   if (best == bins) return false;
   std::vector<double> at(bins);
   for (size_t k = 0; k < bins; ++k) at[k] = (static_cast<double>(k) + 0.5) * kBinMm;
-  const double t = TopCentre(corner, at, depth, kCornerTopMm);
+  const double t = TopCentre(corner, at, depth, kFlatTopMm);
   const size_t k = std::min(bins - 2, static_cast<size_t>(t / kBinMm));
   const double d = std::isfinite(depth[k]) ? depth[k] : depth[best];
   const Eigen::Vector2d xz = p1 + t * along + d * down;
@@ -175,27 +176,13 @@ bool TPoseSideNeck(const Context& c, int sign, const Neck& neck, double z, Eigen
   return true;
 }
 
-// Distance (mm) from `q` to the convex polygon `hull` (indices into `xy`,
-// #N x 2), inside it.
-double HullDepth(const Eigen::MatrixX2d& xy, const std::vector<int>& hull,
-                 const Eigen::Vector2d& q) {
-  double depth = kInf;
-  for (size_t k = 0; k < hull.size(); ++k) {
-    const Eigen::Vector2d a = xy.row(hull[k]), b = xy.row(hull[(k + 1) % hull.size()]);
-    const double t =
-        std::clamp((q - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-12), 0.0, 1.0);
-    depth = std::min(depth, (a + t * (b - a) - q).norm());
-  }
-  return depth;
-}
-
 // The pocket's bottom: of `points` (with their `depths` inside the hull),
-// the one nearest the centre of those within kCornerTopMm of the deepest,
+// the one nearest the centre of those within kFlatTopMm of the deepest,
 // each weighted by how far it passes that line (as TopCentre does for a
 // profile: the deepest single point of a flat-bottomed pocket is noise).
 Eigen::Vector3d PocketBottom(const std::vector<Eigen::Vector3d>& points,
                              const std::vector<double>& depths) {
-  const double line = *std::max_element(depths.begin(), depths.end()) - kCornerTopMm;
+  const double line = *std::max_element(depths.begin(), depths.end()) - kFlatTopMm;
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   double weight = 0;
   for (size_t i = 0; i < points.size(); ++i)
@@ -237,7 +224,7 @@ void AxillaFolds(Context* c, int sign, const Eigen::Vector3d& acromion) {
       if (x < ax - 70 || x > ax + 40 || (front ? p.y() <= arm.armpit.y() : p.y() >= arm.armpit.y()))
         continue;
       points.push_back(p);
-      depths.push_back(HullDepth(xy, hull, p.head<2>()));
+      depths.push_back(DepthInsideHull(xy, hull, p.head<2>()));
     }
     const std::string name = std::string(front ? "axilla_front" : "axilla_back") + Side(sign);
     if (points.empty())

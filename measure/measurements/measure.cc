@@ -240,15 +240,15 @@ Vec StartDirection(const Eigen::MatrixX3d& path, double reach_mm = 20) {
 // an inner point, counted once.
 double ChainSd(const MeasureOptions& o, const MeasurementDef& m, const LandmarkSet& set,
                const std::vector<Eigen::MatrixX3d>& pieces) {
-  const bool closed = m.datum.size() > 2 && m.datum.front() == m.datum.back();
+  const bool closed = IsClosedChain(m);
   const std::size_t n = m.datum.size() - (closed ? 1 : 0);
   double var = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const double sigma = Sigma(o.uncertainty, set, m.datum[i]);
     double weight = 1;
-    const std::size_t before = i > 0 ? i - 1 : pieces.size() - 1;
-    if ((closed || (i > 0 && i + 1 < m.datum.size())) && i < pieces.size() &&
-        before < pieces.size()) {
+    const bool inner = closed || (i > 0 && i + 1 < m.datum.size());
+    if (inner && i < pieces.size()) {
+      const std::size_t before = i > 0 ? i - 1 : pieces.size() - 1;
       const Vec out = StartDirection(pieces[i]);
       const Vec in = -StartDirection(pieces[before].colwise().reverse());
       weight = (out - in).norm();

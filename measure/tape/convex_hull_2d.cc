@@ -5,6 +5,8 @@
 #include <CGAL/convex_hull_2.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
+#include <limits>
 #include <numeric>
 
 #include "scanners/core/errors.h"
@@ -41,6 +43,18 @@ double ConvexHullPerimeter(const Eigen::MatrixX2d& points) {
   for (std::size_t i = 0; i < hull.size(); ++i)
     perimeter += (points.row(hull[(i + 1) % hull.size()]) - points.row(hull[i])).norm();
   return perimeter;
+}
+
+double DepthInsideHull(const Eigen::MatrixX2d& points, const std::vector<int>& hull,
+                       const Eigen::Vector2d& q) {
+  double depth = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < hull.size(); ++k) {
+    const Eigen::Vector2d a = points.row(hull[k]), b = points.row(hull[(k + 1) % hull.size()]);
+    const double t =
+        std::clamp((q - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-12), 0.0, 1.0);
+    depth = std::min(depth, (a + t * (b - a) - q).norm());
+  }
+  return depth;
 }
 
 }  // namespace bespoke

@@ -25,6 +25,13 @@ std::vector<int> ConvexHullIndices(const Eigen::MatrixX2d& points);
 // the segment's length for collinear points (a tape around a flat band).
 double ConvexHullPerimeter(const Eigen::MatrixX2d& points);
 
+// How far `q` lies inside the convex polygon `hull` (ConvexHullIndices of
+// `points`): its distance to the nearest edge, in the points' unit. A
+// section's pockets (the armpit folds) are its points deepest inside its
+// hull.
+double DepthInsideHull(const Eigen::MatrixX2d& points, const std::vector<int>& hull,
+                       const Eigen::Vector2d& q);
+
 }  // namespace bespoke
 
 #endif  // BESPOKE_MEASURE_TAPE_CONVEX_HULL_2D_H_

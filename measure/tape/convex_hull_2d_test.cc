@@ -37,6 +37,15 @@ TEST(ConvexHull2d, SquareWithInteriorAndEdgePoints) {
   EXPECT_NEAR(area2, 200, 1e-9);
 }
 
+TEST(ConvexHull2d, DepthInsideIsTheDistanceToTheNearestEdge) {
+  Eigen::MatrixX2d p(5, 2);
+  p << 0, 0, 10, 0, 10, 10, 0, 10, 3, 4;
+  const std::vector<int> hull = ConvexHullIndices(p);
+  EXPECT_NEAR(DepthInsideHull(p, hull, Eigen::Vector2d(5, 5)), 5, 1e-12);
+  EXPECT_NEAR(DepthInsideHull(p, hull, p.row(4).transpose()), 3, 1e-12);
+  EXPECT_NEAR(DepthInsideHull(p, hull, Eigen::Vector2d(10, 4)), 0, 1e-12);
+}
+
 TEST(ConvexHull2d, EllipseSampledDenselyApproachesItsPerimeter) {
   const double a = 180, b = 120;  // a waist-like section, mm
   const int n = 4000;

@@ -146,13 +146,7 @@ Vec DeepestPocket(const SectionLoop& loop, const std::function<bool(const Vec&)>
   for (Eigen::Index i = 0; i < loop.points.rows(); ++i) {
     const Vec p = loop.points.row(i).transpose();
     if (!keep(p)) continue;
-    double depth = kInf;
-    for (std::size_t k = 0; k < hull.size(); ++k) {
-      const Eigen::Vector2d a = xy.row(hull[k]), b = xy.row(hull[(k + 1) % hull.size()]);
-      const Eigen::Vector2d q = p.head<2>();
-      const double t = std::clamp((q - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
-      depth = std::min(depth, (a + t * (b - a) - q).norm());
-    }
+    const double depth = DepthInsideHull(xy, hull, p.head<2>());
     if (depth > best) best = depth, best_point = p;
   }
   if (best < 0) throw InputError("landmark analysis: no armpit fold found");

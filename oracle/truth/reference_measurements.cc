@@ -352,21 +352,15 @@ ReferenceMeasurements ComputeReferenceMeasurements(const ReferenceOptions& optio
         geodesics.Need(m.datum[i], m.datum[i + 1]);
   }
   geodesics.Solve();
+  // As Measure dispatches: a section, a height, else a chain or a straight
+  // distance (a girth over the skin is a closed chain).
   for (const MeasurementDef* m : todo) {
-    switch (m->kind) {
-      case MeasurementKind::kGirth:
-        if (m->method == MeasurementMethod::kGeodesic)
-          result.measurements.push_back(Length(options, *m, body, geodesics));
-        else
-          result.measurements.push_back(Girth(options, *m, body));
-        break;
-      case MeasurementKind::kLength:
-        result.measurements.push_back(Length(options, *m, body, geodesics));
-        break;
-      case MeasurementKind::kHeight:
-        result.measurements.push_back(Height(*m, body));
-        break;
-    }
+    if (m->method == MeasurementMethod::kSectionHull)
+      result.measurements.push_back(Girth(options, *m, body));
+    else if (m->kind == MeasurementKind::kHeight)
+      result.measurements.push_back(Height(*m, body));
+    else
+      result.measurements.push_back(Length(options, *m, body, geodesics));
   }
   return result;
 }
