@@ -27,6 +27,13 @@ constexpr double kStyloidPastNarrowest_mm = 15;
 // on the deltoid reaches 0.29). Shorter, the arm was cut by the
 // booth's view above the wrist whatever its end looks like.
 constexpr double kMinArmShare = 0.25;
+// The hand: the widest section of the arm between kHandOuterMm and
+// kHandInnerMm from its end (adult hands are 160-210 mm long, so this is the
+// palm or the fingers together). The wrist lies before it: spread fingers,
+// or a bent arm's hand cut obliquely, can be narrower than the wrist.
+constexpr double kHandOuterMm = 150;
+constexpr double kHandInnerMm = 40;
+
 // Below this share of outward-facing normals at the arm's end, the end may
 // be a cut, not a hand (EndCapShare)...
 constexpr double kMinEndCapShare = 0.05;
@@ -169,11 +176,17 @@ void FindArm(Context* c, int sign) {
   double wrist_t = -1;
   std::vector<double> at, radius;
   std::vector<bool> inside;
-  for (double t = f.length - 275; t <= f.length - 75; t += 5) {
+  std::vector<bool> hand;
+  for (double t = f.length - 275; t <= f.length - kHandInnerMm; t += 5) {
     at.push_back(t);
     radius.push_back(SectionRadius(*c, f, t, 4));
-    inside.push_back(t >= f.length - 260 && t <= f.length - 90);
+    hand.push_back(t >= f.length - kHandOuterMm);
   }
+  ProfileExtremeOptions widest;
+  widest.minimum = false;
+  const size_t palm = BestSample(widest, radius, hand);
+  const double palm_t = palm < at.size() ? at[palm] : f.length;
+  for (double t : at) inside.push_back(t >= f.length - 260 && t <= std::min(f.length - 90, palm_t));
   ProfileExtremeOptions narrowest;
   narrowest.half_window = 2;
   const size_t best = BestSample(narrowest, radius, inside);

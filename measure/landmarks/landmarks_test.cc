@@ -508,6 +508,29 @@ TEST(ParametricLandmarks, KneeFromTheFrontOfTheLeg) {
   }
 }
 
+// T-posed MakeHuman bodies turn the forearm forward at the elbow, and their
+// spread fingers, or a bent arm's hand cut across one axis through the whole
+// arm, can be narrower than the wrist: the narrowest section within 90 mm of
+// the fingertips then put the wrist on the hand (seeds 1402 and 1406: wrists
+// 95-118 mm off, elbows 85-94). The wrist is sought before the hand's widest
+// section: every wrist here 13-43 mm off, every elbow 7-37 mm (the other
+// seeds unchanged).
+TEST(MakeHumanLandmarks, TPosedWristIsBeforeTheHand) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(shared / "data/bodies/makehuman");
+  for (std::uint64_t seed : {1401, 1402, 1403, 1404, 1405, 1406}) {
+    const testing::ScannedBody scan = ScannedFullMakeHuman(&model, seed, "arms-90");
+    const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
+    for (const char* name : {"wrist_right", "wrist_left", "elbow_right", "elbow_left"}) {
+      ASSERT_TRUE(set.Has(name)) << "seed " << seed << " " << name;
+      const double error = (set.At(name).position_mm - scan.truth.at(name)).norm();
+      std::printf("seed %d %s %.1f mm\n", static_cast<int>(seed), name, error);
+      // A wrist on the hand lies 90-120 mm along the arm from the truth.
+      EXPECT_LE(error, StartsWith(name, "wrist") ? 80.0 : 60.0) << "seed " << seed << " " << name;
+    }
+  }
+}
+
 // T-posed MakeHuman bodies: the raised shoulders leave no corner between
 // neck and shoulder, and the corner below the chord puts the side neck
 // points on the arm's flat top, 25-45 mm low (the neck girth's plane then
