@@ -140,6 +140,30 @@ int BestInSlab(const Context& c, const ArmFrame& f, double t0, double half,
   return c.SmoothExtreme(candidates, direction, 10);
 }
 
+// The wrist's station along the arm (mm from the frame's origin; -1 when
+// the forearm has no section): the narrowest section between 260 and 90 mm
+// from the arm's end and not past the hand's widest section (kHandOuterMm),
+// the vertex of the radius profile's parabola round its smallest sample
+// (profile_extreme.h).
+double NarrowestBeforeTheHand(const Context& c, const ArmFrame& f) {
+  std::vector<double> at, radius;
+  std::vector<bool> hand, inside;
+  for (double t = f.length - 275; t <= f.length - kHandInnerMm; t += 5) {
+    at.push_back(t);
+    radius.push_back(SectionRadius(c, f, t, 4));
+    hand.push_back(t >= f.length - kHandOuterMm);
+  }
+  ProfileExtremeOptions widest;
+  widest.minimum = false;
+  const size_t palm = BestSample(widest, radius, hand);
+  const double palm_t = palm < at.size() ? at[palm] : f.length;
+  for (double t : at) inside.push_back(t >= f.length - 260 && t <= std::min(f.length - 90, palm_t));
+  ProfileExtremeOptions narrowest;
+  narrowest.half_window = 2;
+  const size_t best = BestSample(narrowest, radius, inside);
+  return best < at.size() ? ProfileExtreme(narrowest, at, radius, best) : -1;
+}
+
 void FindArm(Context* c, int sign) {
   const ArmInfo& arm = c->arm[sign > 0 ? 0 : 1];
   const std::string side = Side(sign);
@@ -169,28 +193,7 @@ void FindArm(Context* c, int sign) {
     return;
   }
   if (arm.touching) flags.push_back("arm_touching_torso"), confidence = 0.3;
-  // Wrist: the narrowest section between 260 mm and 90 mm from the arm's end
-  // (the hand is wider and flat).
-  // The radius profile's parabola around its smallest sample gives a
-  // station off the 5 mm grid (profile_extreme.h).
-  double wrist_t = -1;
-  std::vector<double> at, radius;
-  std::vector<bool> inside;
-  std::vector<bool> hand;
-  for (double t = f.length - 275; t <= f.length - kHandInnerMm; t += 5) {
-    at.push_back(t);
-    radius.push_back(SectionRadius(*c, f, t, 4));
-    hand.push_back(t >= f.length - kHandOuterMm);
-  }
-  ProfileExtremeOptions widest;
-  widest.minimum = false;
-  const size_t palm = BestSample(widest, radius, hand);
-  const double palm_t = palm < at.size() ? at[palm] : f.length;
-  for (double t : at) inside.push_back(t >= f.length - 260 && t <= std::min(f.length - 90, palm_t));
-  ProfileExtremeOptions narrowest;
-  narrowest.half_window = 2;
-  const size_t best = BestSample(narrowest, radius, inside);
-  if (best < at.size()) wrist_t = ProfileExtreme(narrowest, at, radius, best);
+  double wrist_t = NarrowestBeforeTheHand(*c, f);
   if (wrist_t < 0) {
     for (const char* n : {"upper_arm", "elbow", "wrist"})
       c->Missing(n + side, "the forearm was not found");
