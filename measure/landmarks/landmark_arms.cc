@@ -17,12 +17,12 @@ namespace {
 // 0.186 of stature; forearm, radiale-stylion, about 0.146) give 0.56 to the
 // elbow joint's line; the olecranon sits a little above it, and 0.49
 // matched the MakeHuman truth best (20-30 mm too low at 0.56, 17-30 mm at
-// 0.52). The share is the fallback for a straight arm (ElbowStation).
+// 0.52). The share is the fallback for a straight arm (BendStation).
 constexpr double kElbowShare = 0.49;
 // An arm whose centre line bends by at least this much has its elbow at
-// the bend. Straight arms read 2-7 deg from the muscles' shape alone
-// (parametric bodies, whose arms are straight by construction); relaxed
-// MakeHuman arms bend 27-41 deg in an A-pose.
+// the bend. Arms straight by construction (the parametric body) stay under
+// it from the muscles' shape alone; relaxed MakeHuman arms bend well past it
+// (the elbow methods of the accuracy sets, docs/landmarks.md step 7).
 constexpr double kMinElbowBendDeg = 12;
 constexpr double kStyloidPastNarrowest_mm = 15;
 // The shortest shoulder-to-arm's-end distance, as a share of stature, that
@@ -52,15 +52,28 @@ struct ArmFrame {
   double length = 0;      // max t
 };
 
+// A least-squares line through points[a, b): mean, unit direction, and the
+// sum of squared distances from it (mm^2).
+struct FittedLine {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero(), direction = Eigen::Vector3d::UnitZ();
+  double residual_mm2 = 0;
+};
+
+FittedLine FitLine(const std::vector<Eigen::Vector3d>& points, size_t a, size_t b) {
+  FittedLine l;
+  for (size_t k = a; k < b; ++k) l.mean += points[k];
+  l.mean /= static_cast<double>(b - a);
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (size_t k = a; k < b; ++k) cov += (points[k] - l.mean) * (points[k] - l.mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  l.direction = eig.eigenvectors().col(2);
+  l.residual_mm2 = eig.eigenvalues()(0) + eig.eigenvalues()(1);
+  return l;
+}
+
 bool MakeFrame(const Context& c, const ArmInfo& arm, const Eigen::Vector3d& origin, ArmFrame* f) {
   if (arm.centre_line.size() < 6 || arm.rows.empty()) return false;
-  Eigen::MatrixX3d line(static_cast<Eigen::Index>(arm.centre_line.size()), 3);
-  for (size_t i = 0; i < arm.centre_line.size(); ++i)
-    line.row(static_cast<Eigen::Index>(i)) = arm.centre_line[i];
-  const Eigen::RowVector3d mean = line.colwise().mean();
-  const Eigen::Matrix3d cov = (line.rowwise() - mean).transpose() * (line.rowwise() - mean);
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
-  f->axis = eig.eigenvectors().col(2);
+  f->axis = FitLine(arm.centre_line, 0, arm.centre_line.size()).direction;
   if (f->axis.dot(arm.centre_line.back() - arm.centre_line.front()) < 0) f->axis = -f->axis;
   f->origin = origin;
   f->rows = arm.rows;
@@ -168,34 +181,13 @@ double NarrowestBeforeTheHand(const Context& c, const ArmFrame& f) {
   return best < at.size() ? ProfileExtreme(narrowest, at, radius, best) : -1;
 }
 
-// A least-squares line through points[a, b): mean, unit direction, and the
-// sum of squared distances from it (mm^2).
-struct FittedLine {
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero(), direction = Eigen::Vector3d::UnitZ();
-  double residual_mm2 = 0;
-};
-
-FittedLine FitLine(const std::vector<Eigen::Vector3d>& points, size_t a, size_t b) {
-  FittedLine l;
-  for (size_t k = a; k < b; ++k) l.mean += points[k];
-  l.mean /= static_cast<double>(b - a);
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (size_t k = a; k < b; ++k) cov += (points[k] - l.mean) * (points[k] - l.mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
-  l.direction = eig.eigenvectors().col(2);
-  l.residual_mm2 = eig.eigenvalues()(0) + eig.eigenvalues()(1);
-  return l;
-}
-
-// The elbow's station along the arm (mm from the frame's origin). The
+// The station of the arm's bend (mm from the frame's origin), or -1 when the
+// arm bends less than kMinElbowBendDeg (or has too few sections). The
 // centroids of the arm's sections (10 mm slabs every 5 mm, from 0.15 of the
 // wrist's station to 15 mm before it) are split in two where two straight
 // lines fit them best, the split sought between 0.3 and 0.7 of the wrist's
-// station and refined off the 5 mm grid (profile_extreme.h). When the two
-// lines meet at kMinElbowBendDeg or more, the joint is that bend; otherwise
-// (a straight arm, or too few sections) kElbowShare of the wrist's station.
-// `bend_deg` gets the angle found (0 without a split).
-double ElbowStation(const Context& c, const ArmFrame& f, double wrist_t, double* bend_deg) {
+// station and refined off the 5 mm grid (profile_extreme.h).
+double BendStation(const Context& c, const ArmFrame& f, double wrist_t) {
   std::vector<double> at;
   std::vector<Eigen::Vector3d> centre;
   for (double t = 0.15 * wrist_t; t <= wrist_t - 15; t += 5) {
@@ -205,7 +197,6 @@ double ElbowStation(const Context& c, const ArmFrame& f, double wrist_t, double*
       if (std::abs(f.t[i] - t) <= 5) sum += c.P(f.rows[i]), ++n;
     if (n >= 8) at.push_back(t), centre.push_back(sum / n);
   }
-  *bend_deg = 0;
   // Residual of the two-line fit split at each section (each line keeps
   // at least five sections).
   std::vector<double> residual(at.size(), kNaN);
@@ -216,11 +207,11 @@ double ElbowStation(const Context& c, const ArmFrame& f, double wrist_t, double*
     eligible[k] = at[k] >= 0.3 * wrist_t && at[k] <= 0.7 * wrist_t;
   }
   const size_t split = BestSample(ProfileExtremeOptions{}, residual, eligible);
-  if (split == at.size()) return kElbowShare * wrist_t;
+  if (split == at.size()) return -1;
   const Eigen::Vector3d upper = FitLine(centre, 0, split + 1).direction,
                         fore = FitLine(centre, split, centre.size()).direction;
-  *bend_deg = std::acos(std::min(1.0, std::abs(upper.dot(fore)))) * 180 / M_PI;
-  if (*bend_deg < kMinElbowBendDeg) return kElbowShare * wrist_t;
+  const double bend_deg = std::acos(std::min(1.0, std::abs(upper.dot(fore)))) * 180 / M_PI;
+  if (bend_deg < kMinElbowBendDeg) return -1;
   ProfileExtremeOptions refine;
   refine.half_window = 2;
   return ProfileExtreme(refine, at, residual, split);
@@ -267,9 +258,10 @@ void FindArm(Context* c, int sign) {
   wrist_t += kStyloidPastNarrowest_mm;
   const int wrist = BestInSlab(*c, f, wrist_t, 10, back);
   if (wrist >= 0) c->Put("wrist" + side, c->P(wrist), confidence, "arm_section_min_back", flags);
-  double bend_deg = 0;
-  const double elbow_t = ElbowStation(*c, f, wrist_t, &bend_deg);
-  const bool at_bend = bend_deg >= kMinElbowBendDeg;
+  // The elbow: the arm's bend, or a share of the arm when it is straight.
+  const double bend_t = BendStation(*c, f, wrist_t);
+  const bool at_bend = bend_t >= 0;
+  const double elbow_t = at_bend ? bend_t : kElbowShare * wrist_t;
   const int elbow = BestInSlab(*c, f, elbow_t, 15, back);
   if (elbow < 0) {
     c->Missing("elbow" + side, "no arm points at the elbow");

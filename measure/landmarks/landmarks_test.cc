@@ -531,10 +531,9 @@ TEST(MakeHumanLandmarks, TPosedWristIsBeforeTheHand) {
   }
 }
 
-// Relaxed MakeHuman arms bend at the elbow (27-41 deg), and the elbow is
-// that bend. At a fixed share of the shoulder-to-wrist distance the elbows
-// of these bodies (full population, seeds not looked at while choosing the
-// rule) were 4.9-19.1 mm off, median 13.3; at the bend of the arm's centre
+// Relaxed MakeHuman arms bend at the elbow, and the elbow is that bend. At a fixed share of the
+// shoulder-to-wrist distance the elbows of these bodies (full population, seeds not looked at while
+// choosing the rule) were 4.9-19.1 mm off, median 13.3; at the bend of the arm's centre
 // line 3.2-22.9 mm, median 8.7.
 TEST(MakeHumanLandmarks, ElbowAtTheArmsBend) {
   BESPOKE_REQUIRE_SHARED(shared);
