@@ -38,22 +38,57 @@ bool CrossesHole(const PointIndex& index, const Eigen::MatrixX3d& normals, const
   return true;
 }
 
-// The scan point p within max_bridge_mm of `datum` minimising
-// geodesic(from, p) + |p - datum| (with `must_cross`, only chords that cross
-// a hole); -1 when none. At most 256 candidates, evenly spread.
+// The skin under a bridge from scan point `p` to `datum` (mm): the circular
+// arc whose chord meets the tangent planes at the mean of its angles to
+// them - p's plane (unit normal n_p) and the hidden skin's (the mean normal
+// of the scan around the datum point, n_datum; left out when shorter than
+// 0.5: skins facing each other, as both thighs round a crotch). A circle's
+// chord meets its tangent at half the arc's angle a, so the arc is
+// chord * a / sin(a): across a crease that turns the skin by 90 deg, 11 %
+// longer than the chord that cuts through it. The chord without normals.
+double ArcOver(const Vec& p, const Vec& n_p, const Vec& datum, const Vec& n_datum) {
+  const double chord = (datum - p).norm();
+  if (chord < 1e-9 || n_p.norm() < 0.5) return chord;
+  const Vec d = (datum - p) / chord;
+  double angle = std::asin(std::min(1.0, std::abs(d.dot(n_p.normalized()))));
+  if (n_datum.norm() >= 0.5)
+    angle = 0.5 * (angle + std::asin(std::min(1.0, std::abs(d.dot(n_datum.normalized())))));
+  return angle < 1e-6 ? chord : chord * angle / std::sin(angle);
+}
+
+// The mean of the unit normals of the 32 scan points nearest x (zero
+// without normals).
+Vec MeanNormalNear(const PointIndex& index, const Eigen::MatrixX3d& normals, const Vec& x) {
+  if (normals.rows() != index.size()) return Vec::Zero();
+  std::vector<int> near;
+  std::vector<double> d2;
+  index.Knn(x, 32, &near, &d2);
+  Vec sum = Vec::Zero();
+  for (int q : near) sum += normals.row(q).transpose();
+  return near.empty() ? Vec::Zero() : Vec(sum / static_cast<double>(near.size()));
+}
+
+// The scan point p within reach_mm of `datum` minimising geodesic(from, p)
+// + the arc over the hole (ArcOver; with `must_cross`, only chords that
+// cross a hole); -1 when none. At most 256 candidates, evenly spread.
 int BestBridge(CloudGeodesics& geodesics, const Eigen::MatrixX3d& normals, const Vec& from,
-               const Vec& datum, const GeodesicPathOptions& o, bool must_cross, double* cost) {
+               const Vec& datum, const GeodesicPathOptions& o, double reach_mm, bool must_cross,
+               double* cost) {
   const PointIndex& index = geodesics.grid().index();
   std::vector<int> near;
   std::vector<double> d2;
   index.Knn(datum, 4096, &near, &d2);
+  const bool with_normals = normals.rows() == index.size();
+  const Vec n_datum = MeanNormalNear(index, normals, datum);
   std::vector<int> candidates;
   std::vector<double> bridges;
   for (size_t k = 0; k < near.size(); ++k) {
-    if (d2[k] > o.max_bridge_mm * o.max_bridge_mm) break;
+    if (d2[k] > reach_mm * reach_mm) break;
     if (must_cross && !CrossesHole(index, normals, index.point(near[k]), datum, o.off_surface_mm))
       continue;
-    candidates.push_back(near[k]), bridges.push_back(std::sqrt(d2[k]));
+    const Vec n_p = with_normals ? Vec(normals.row(near[k]).transpose()) : Vec::Zero();
+    candidates.push_back(near[k]);
+    bridges.push_back(ArcOver(index.point(near[k]), n_p, datum, n_datum));
   }
   const size_t step = candidates.size() / 256 + 1;
   std::vector<int> some;
@@ -66,16 +101,45 @@ int BestBridge(CloudGeodesics& geodesics, const Eigen::MatrixX3d& normals, const
   return best < 0 ? -1 : some[static_cast<size_t>(best)];
 }
 
-// The path `from` -> scan point `to` plus a straight bridge `to` -> `datum`.
-GeodesicPath Bridged(CloudGeodesics& geodesics, const Vec& from, int to_row, const Vec& datum) {
-  const Vec to = geodesics.grid().index().point(to_row);
+// BestBridge within first_bridge_mm, and within max_bridge_mm when that
+// finds none or the way is still a detour: a tape lies on the skin wherever
+// there is skin, and the arc, which cannot know the hidden skin's shape,
+// would otherwise favour the longest bridge on offer.
+int ReachBridge(CloudGeodesics& geodesics, const Eigen::MatrixX3d& normals, const Vec& from,
+                const Vec& datum, const GeodesicPathOptions& o, bool must_cross, double* cost) {
+  const int near =
+      BestBridge(geodesics, normals, from, datum, o, o.first_bridge_mm, must_cross, cost);
+  if (near >= 0 && *cost <= o.detour_ratio * (datum - from).norm()) return near;
+  double far_cost = kInf;
+  const int far =
+      BestBridge(geodesics, normals, from, datum, o, o.max_bridge_mm, must_cross, &far_cost);
+  if (far < 0 || far_cost >= *cost) return near;
+  *cost = far_cost;
+  return far;
+}
+
+// The path `from` -> scan point `to` plus the bridge `to` -> `datum`, the
+// arc over the hidden skin (ArcOver).
+GeodesicPath Bridged(CloudGeodesics& geodesics, const Eigen::MatrixX3d& normals, const Vec& from,
+                     int to_row, const Vec& datum) {
+  const PointIndex& index = geodesics.grid().index();
+  const Vec to = index.point(to_row);
   const CloudGeodesicPath p = geodesics.Between(from, to);
+  const Vec n_to =
+      normals.rows() == index.size() ? Vec(normals.row(to_row).transpose()) : Vec::Zero();
   GeodesicPath out;
-  out.bridged_mm = (datum - to).norm();
+  out.bridged_mm = ArcOver(to, n_to, datum, MeanNormalNear(index, normals, datum));
   out.length_mm = p.length_mm + out.bridged_mm;
   out.points.resize(p.points.rows() + 1, 3);
   out.points << p.points, datum.transpose();
   return out;
+}
+
+// Whether a solved path runs more than detour_ratio times the chord between
+// its ends: round a limb or a buttock, where a hole in the scan (the crotch
+// between touching thighs) cut the way a tape would take.
+bool Detour(const GeodesicPathOptions& o, const GeodesicPath& path, const Vec& a, const Vec& b) {
+  return path.error.empty() && path.length_mm > o.detour_ratio * (a - b).norm();
 }
 
 }  // namespace
@@ -135,15 +199,16 @@ GeodesicPath GeodesicPaths::SolvePair(const GeodesicPathOptions& o, CloudGeodesi
       const End& on = a.in_hole ? b : a;
       const Vec& datum = a.in_hole ? xa : xb;
       double cost = 0;
-      const int p = BestBridge(geodesics, normals_, on.start, datum, o, false, &cost);
+      const int p = ReachBridge(geodesics, normals_, on.start, datum, o, false, &cost);
       const int exit = p >= 0 ? p : geodesics.grid().index().Nearest(datum);
-      out = Bridged(geodesics, on.start, exit, datum);
+      out = Bridged(geodesics, normals_, on.start, exit, datum);
       reversed = a.in_hole;
     } else {
       const CloudGeodesicPath path = geodesics.Between(a.start, b.start);
       out.length_mm = path.length_mm;
       out.points = path.points;
-      if (b.at_rim) BridgeInto(o, geodesics, a.start, xb, &out);  // the source's propagation
+      if (b.at_rim || Detour(o, out, xa, xb))  // from the source's propagation
+        BridgeInto(o, geodesics, a.start, xb, &out);
     }
     // Stored from pair.first to pair.second.
     const bool forward = (pair.first == source) != reversed;
@@ -158,9 +223,9 @@ GeodesicPath GeodesicPaths::SolvePair(const GeodesicPathOptions& o, CloudGeodesi
 void GeodesicPaths::BridgeInto(const GeodesicPathOptions& o, CloudGeodesics& geodesics,
                                const Vec& from, const Vec& datum, GeodesicPath* path) const {
   double cost = kInf;
-  const int p = BestBridge(geodesics, normals_, from, datum, o, true, &cost);
+  const int p = ReachBridge(geodesics, normals_, from, datum, o, true, &cost);
   if (p < 0 || cost >= path->length_mm) return;
-  GeodesicPath bridged = Bridged(geodesics, from, p, datum);
+  GeodesicPath bridged = Bridged(geodesics, normals_, from, p, datum);
   if (bridged.length_mm < path->length_mm) *path = std::move(bridged);
 }
 
@@ -227,7 +292,9 @@ void GeodesicPaths::Solve(const GeodesicPathOptions& o, CloudGeodesics& geodesic
           results[w][pair] = SolvePair(o, g, set, groups[k].first, pair);
           const std::string& other = pair.first == groups[k].first ? pair.second : pair.first;
           if (!ends_.at(groups[k].first).in_hole && !ends_.at(other).in_hole &&
-              ends_.at(groups[k].first).at_rim)
+              (ends_.at(groups[k].first).at_rim ||
+               Detour(o, results[w][pair], set.points.at(pair.first).position_mm,
+                      set.points.at(pair.second).position_mm)))
             reverse.emplace_back(other, pair);
         }
       }

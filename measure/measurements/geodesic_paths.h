@@ -7,15 +7,19 @@
 // group of pairs when free. A tape crosses the scan's
 // holes (the crotch and the armpits no sensor saw): where a datum point
 // lies in a hole (farther than tolerance_mm from every scan point, up to
-// max_bridge_mm) or at one (its nearest scan point lies on the rim of an
-// unscanned region), the path may end with a bridge from a scan point p to
-// the datum point, chosen to minimise geodesic(other end, p) + bridge; the
-// bridge is the circular arc meeting p's normal and the hidden skin's (the
-// mean normal around the datum point), not the straight chord, which cuts
-// inside a curved crease. At a hole's rim the chord must leave the surface
-// (cross the hole, not cut through skin) and the bridge is taken only when
-// shorter than the path over the scan. Each entry says how much of its
-// length was bridged.
+// max_bridge_mm), at one (its nearest scan point lies on the rim of an
+// unscanned region), or where the path over the scan is a detour (longer
+// than detour_ratio times the chord, as round a buttock when the skin under
+// a crotch was not seen but the thighs round the datum point were), the
+// path may end with a bridge from a scan point p to the datum point, chosen
+// to minimise geodesic(other end, p) + bridge, p within first_bridge_mm of
+// the datum point, or within max_bridge_mm when that finds none or still
+// detours. The bridge is the circular arc meeting p's tangent plane and the
+// hidden skin's (the mean normal around the datum point) at equal angles,
+// not the straight chord, which cuts inside a curved crease. Except from a
+// hole, the chord must leave the surface (cross the hole, not cut through
+// skin) and the bridge is taken only when shorter than the path over the
+// scan. Each entry says how much of its length was bridged.
 // Frame and units: the body frame, mm.
 #ifndef BESPOKE_MEASURE_MEASUREMENTS_GEODESIC_PATHS_H_
 #define BESPOKE_MEASURE_MEASUREMENTS_GEODESIC_PATHS_H_
@@ -33,17 +37,19 @@
 namespace bespoke {
 
 struct GeodesicPathOptions {
-  double tolerance_mm = 20;   // a datum point farther than this from the scan is in a hole
-  double max_bridge_mm = 80;  // the longest straight bridge into or across a hole
-  double rim_radius_mm = 25;  // neighbourhood that tells a hole's rim from open skin
-  double rim_offset = 0.45;   // a rim: the neighbours' mean unit direction is this long
-  double off_surface_mm = 4;  // a bridge crossing a hole stays this far from the scan
-  int threads = 2;            // worker threads (each beyond the first builds its own grid)
+  double tolerance_mm = 20;     // default 20: a datum point farther from the scan is in a hole
+  double first_bridge_mm = 80;  // default 80: bridges are sought this far first...
+  double max_bridge_mm = 120;   // default 120: ...then this far (none found, or still a detour)
+  double rim_radius_mm = 25;    // default 25: neighbourhood telling a hole's rim from open skin
+  double rim_offset = 0.45;     // default 0.45: a rim's neighbours' mean unit direction length
+  double off_surface_mm = 4;    // default 4: a bridge crossing a hole stays this far off the scan
+  double detour_ratio = 1.25;   // default 1.25: a path this many chords long seeks bridges
+  int threads = 2;              // default 2: workers (each beyond the first builds its own grid)
 };
 
 struct GeodesicPath {
   double length_mm = 0;
-  double bridged_mm = 0;    // of length_mm, the straight bridges over unscanned skin
+  double bridged_mm = 0;    // of length_mm, the bridges (arcs) over unscanned skin
   Eigen::MatrixX3d points;  // #K x 3, from the pair's first point to its second
   std::string error;        // non-empty: no path over the scan
 };

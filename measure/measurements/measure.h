@@ -27,10 +27,11 @@
 //   "datum_off_scan"          a datum point of a length is farther than
 //                             datum_tolerance_mm from every scan point (in a
 //                             scan hole, e.g. the crotch)
-//   "bridged"                 part of a length crosses unscanned skin as a
-//                             straight bridge (bridged_mm; geodesic_paths.h:
-//                             into a hole up to max_bridge_mm, or across one
-//                             from its rim when shorter than over the scan)
+//   "bridged"                 part of a length crosses unscanned skin as an
+//                             arc (bridged_mm; geodesic_paths.h: into a hole
+//                             up to max_bridge_mm, or across one from its rim
+//                             or round which the scan's path detours, when
+//                             shorter than over the scan)
 // Measurements whose landmarks are missing, or whose geodesic has no path
 // over the scan, are listed in `skipped` with the reason, never guessed.
 //
@@ -59,7 +60,7 @@ struct MeasureOptions {
   CloudGeodesicsOptions geodesics;  // geodesic lengths (defaults in cloud_geodesics.h)
   UncertaintyOptions uncertainty;   // uncertainty_mm (defaults in uncertainty.h)
   double datum_tolerance_mm = 20;   // default 20 mm: "datum_off_section" / "datum_off_scan"
-  double max_bridge_mm = 80;     // default 80 mm: a datum point this far in a scan hole is bridged
+  double max_bridge_mm = 120;    // default 120 mm: a datum point this far in a scan hole is bridged
   double arms_margin_mm = 30;    // default 30 mm: "section_includes_arms" beyond the datums' x
   double lower_step_mm = 2;      // default 2 mm: arms "lower" plane step
   double max_lower_mm = 100;     // default 100 mm: arms "lower" limit
