@@ -68,51 +68,69 @@ Vec MeanNormalNear(const PointIndex& index, const Eigen::MatrixX3d& normals, con
   return near.empty() ? Vec::Zero() : Vec(sum / static_cast<double>(near.size()));
 }
 
-// The scan point p within reach_mm of `datum` minimising geodesic(from, p)
-// + the arc over the hole (ArcOver; with `must_cross`, only chords that
-// cross a hole); -1 when none. At most 256 candidates, evenly spread.
-int BestBridge(CloudGeodesics& geodesics, const Eigen::MatrixX3d& normals, const Vec& from,
-               const Vec& datum, const GeodesicPathOptions& o, double reach_mm, bool must_cross,
-               double* cost) {
-  const PointIndex& index = geodesics.grid().index();
+// Whether a way of length_mm between a and b runs more than detour_ratio
+// times their chord: round a limb or a buttock, where a hole in the scan
+// (the crotch between touching thighs) cut the way a tape would take.
+bool IsDetour(const GeodesicPathOptions& o, double length_mm, const Vec& a, const Vec& b) {
+  return length_mm > o.detour_ratio * (a - b).norm();
+}
+
+// Scan points that may start a bridge into `datum`, nearest first: within
+// max_bridge_mm (with `must_cross`, only those whose chord crosses a hole),
+// each with its distance and the arc over the hole (ArcOver).
+struct BridgeCandidates {
+  std::vector<int> rows;
+  std::vector<double> distance_mm, arc_mm;
+};
+
+BridgeCandidates CandidatesInto(const PointIndex& index, const Eigen::MatrixX3d& normals,
+                                const Vec& datum, const GeodesicPathOptions& o, bool must_cross) {
   std::vector<int> near;
   std::vector<double> d2;
   index.Knn(datum, 4096, &near, &d2);
   const bool with_normals = normals.rows() == index.size();
   const Vec n_datum = MeanNormalNear(index, normals, datum);
-  std::vector<int> candidates;
-  std::vector<double> bridges;
+  BridgeCandidates c;
   for (size_t k = 0; k < near.size(); ++k) {
-    if (d2[k] > reach_mm * reach_mm) break;
+    if (d2[k] > o.max_bridge_mm * o.max_bridge_mm) break;
     if (must_cross && !CrossesHole(index, normals, index.point(near[k]), datum, o.off_surface_mm))
       continue;
     const Vec n_p = with_normals ? Vec(normals.row(near[k]).transpose()) : Vec::Zero();
-    candidates.push_back(near[k]);
-    bridges.push_back(ArcOver(index.point(near[k]), n_p, datum, n_datum));
+    c.rows.push_back(near[k]);
+    c.distance_mm.push_back(std::sqrt(d2[k]));
+    c.arc_mm.push_back(ArcOver(index.point(near[k]), n_p, datum, n_datum));
   }
-  const size_t step = candidates.size() / 256 + 1;
+  return c;
+}
+
+// Of the candidates within reach_mm, the one minimising geodesic(from, p) +
+// its arc; -1 when none. At most 256 candidates, evenly spread.
+int BestBridge(CloudGeodesics& geodesics, const BridgeCandidates& c, const Vec& from,
+               double reach_mm, double* cost) {
+  size_t n = 0;
+  while (n < c.rows.size() && c.distance_mm[n] <= reach_mm) ++n;
+  const size_t step = n / 256 + 1;
   std::vector<int> some;
-  std::vector<double> some_bridges;
-  for (size_t k = 0; k < candidates.size(); k += step)
-    some.push_back(candidates[k]), some_bridges.push_back(bridges[k]);
+  std::vector<double> some_arcs;
+  for (size_t k = 0; k < n; k += step) some.push_back(c.rows[k]), some_arcs.push_back(c.arc_mm[k]);
   *cost = kInf;
   if (some.empty()) return -1;
-  const int best = geodesics.NearestOf(from, some, some_bridges, cost);
+  const int best = geodesics.NearestOf(from, some, some_arcs, cost);
   return best < 0 ? -1 : some[static_cast<size_t>(best)];
 }
 
-// BestBridge within first_bridge_mm, and within max_bridge_mm when that
+// The best bridge within first_bridge_mm, and within max_bridge_mm when that
 // finds none or the way is still a detour: a tape lies on the skin wherever
 // there is skin, and the arc, which cannot know the hidden skin's shape,
 // would otherwise favour the longest bridge on offer.
 int ReachBridge(CloudGeodesics& geodesics, const Eigen::MatrixX3d& normals, const Vec& from,
                 const Vec& datum, const GeodesicPathOptions& o, bool must_cross, double* cost) {
-  const int near =
-      BestBridge(geodesics, normals, from, datum, o, o.first_bridge_mm, must_cross, cost);
-  if (near >= 0 && *cost <= o.detour_ratio * (datum - from).norm()) return near;
+  const BridgeCandidates c =
+      CandidatesInto(geodesics.grid().index(), normals, datum, o, must_cross);
+  const int near = BestBridge(geodesics, c, from, o.first_bridge_mm, cost);
+  if (near >= 0 && !IsDetour(o, *cost, datum, from)) return near;
   double far_cost = kInf;
-  const int far =
-      BestBridge(geodesics, normals, from, datum, o, o.max_bridge_mm, must_cross, &far_cost);
+  const int far = BestBridge(geodesics, c, from, o.max_bridge_mm, &far_cost);
   if (far < 0 || far_cost >= *cost) return near;
   *cost = far_cost;
   return far;
@@ -135,11 +153,9 @@ GeodesicPath Bridged(CloudGeodesics& geodesics, const Eigen::MatrixX3d& normals,
   return out;
 }
 
-// Whether a solved path runs more than detour_ratio times the chord between
-// its ends: round a limb or a buttock, where a hole in the scan (the crotch
-// between touching thighs) cut the way a tape would take.
+// Whether a solved path is a detour (IsDetour) between its datum points.
 bool Detour(const GeodesicPathOptions& o, const GeodesicPath& path, const Vec& a, const Vec& b) {
-  return path.error.empty() && path.length_mm > o.detour_ratio * (a - b).norm();
+  return path.error.empty() && IsDetour(o, path.length_mm, a, b);
 }
 
 }  // namespace
