@@ -88,8 +88,7 @@ double Sigma(const UncertaintyOptions& u, const LandmarkSet& set, const std::str
 // datum's effect and is left out.
 double GirthSd(const MeasureOptions& o, const MeasurementDef& m, const PointCloud& cloud,
                const LandmarkSet& set, const Vec& point, const Vec& normal,
-               const Eigen::MatrixX3d& anchors, const std::vector<bool>& leave_out, bool one_part,
-               double girth_mm) {
+               const Eigen::MatrixX3d& anchors, const SectionMembers& members, double girth_mm) {
   double var = 0;
   for (const std::string& name : m.datum)
     var += Sigma(o.uncertainty, set, name) * Sigma(o.uncertainty, set, name);
@@ -104,7 +103,7 @@ double GirthSd(const MeasureOptions& o, const MeasurementDef& m, const PointClou
   for (double sign : {-1.0, 1.0}) {
     const SectionGirth s =
         MeasureSectionGirth(o.section, cloud.points, cloud.normals, point + sign * probe * normal,
-                            normal, anchors, leave_out, one_part);
+                            normal, anchors, members);
     const double d = std::abs(s.girth_mm - girth_mm);
     if (s.points > 0 && d < 0.2 * girth_mm) change = std::max(change, d);
   }
@@ -113,24 +112,25 @@ double GirthSd(const MeasureOptions& o, const MeasurementDef& m, const PointClou
 
 bool IsArm(ScanPart part) { return part == ScanPart::kArmRight || part == ScanPart::kArmLeft; }
 
-// The points a girth leaves out, from the body structure's parts: a trunk
+// The points a girth may hold, from the body structure's parts: a trunk
 // girth (horizontal, round the body: side centre or both) keeps the trunk's
 // points only, so arms and hands resting on it never join its section
 // however close they lie, and all that is left is its section (`one_part`),
 // however the scan's holes cut it: the piece at a single datum point (under-
 // bust, middle hip) can be a sliver between two holes of a sparse scan
 // (a 9 mm middle hip girth at 60k points). An arm's girth (a datum point on
-// an arm) keeps that arm's points only: an upper arm resting on the trunk
-// is one section with it. Another girth (a leg's) leaves out the arms, and
-// a leg's the other leg: thighs that touch are one section.
-// Empty (nothing left out) without a structure.
-std::vector<bool> LeaveOut(const MeasurementDef& m, const PointCloud& cloud,
-                           const std::vector<ScanPart>& parts, const Eigen::MatrixX3d& anchors,
-                           bool* one_part) {
-  *one_part = false;
-  if (parts.size() != static_cast<std::size_t>(cloud.size()) || cloud.size() == 0) return {};
+// an arm) keeps that arm's points, and the trunk's as gap points: an upper
+// arm resting on the trunk is one skin with it in the scan, and the
+// structure's boundary (closer to the hand than the armpit) can give the
+// arm's inner side to the trunk. Another girth (a leg's) leaves out the
+// arms, and a leg's the other leg: thighs that touch are one section.
+// Empty (every point may join) without a structure.
+SectionMembers Members(const MeasurementDef& m, const PointCloud& cloud,
+                       const std::vector<ScanPart>& parts, const Eigen::MatrixX3d& anchors) {
+  SectionMembers out;
+  if (parts.size() != static_cast<std::size_t>(cloud.size()) || cloud.size() == 0) return out;
   const bool trunk = IsTrunkGirth(m);
-  std::vector<bool> out(parts.size());
+  out.leave_out.resize(parts.size());
   ScanPart other_leg = ScanPart::kNone;
   for (Eigen::Index a = 0; a < anchors.rows() && !trunk; ++a) {
     Eigen::Index nearest = 0;
@@ -139,7 +139,11 @@ std::vector<bool> LeaveOut(const MeasurementDef& m, const PointCloud& cloud,
     if (part == ScanPart::kLegRight) other_leg = ScanPart::kLegLeft;
     if (part == ScanPart::kLegLeft) other_leg = ScanPart::kLegRight;
     if (!IsArm(part)) continue;
-    for (std::size_t i = 0; i < parts.size(); ++i) out[i] = parts[i] != part;
+    out.gap_only.resize(parts.size());
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      out.gap_only[i] = parts[i] == ScanPart::kTrunk;
+      out.leave_out[i] = parts[i] != part && !out.gap_only[i];
+    }
     return out;
   }
   // A right-side limb girth whose datum point lies on the trunk's side of
@@ -147,8 +151,9 @@ std::vector<bool> LeaveOut(const MeasurementDef& m, const PointCloud& cloud,
   // takes in the left leg.
   if (!trunk && other_leg == ScanPart::kNone && m.side == "right") other_leg = ScanPart::kLegLeft;
   for (std::size_t i = 0; i < parts.size(); ++i)
-    out[i] = trunk ? parts[i] != ScanPart::kTrunk : IsArm(parts[i]) || parts[i] == other_leg;
-  *one_part = trunk;
+    out.leave_out[i] =
+        trunk ? parts[i] != ScanPart::kTrunk : IsArm(parts[i]) || parts[i] == other_leg;
+  out.one_part = trunk;
   return out;
 }
 
@@ -160,22 +165,21 @@ Measurement Girth(const MeasureOptions& o, const MeasurementDef& m, const PointC
   Eigen::MatrixX3d anchors(static_cast<Eigen::Index>(m.datum.size()), 3);
   for (std::size_t i = 0; i < m.datum.size(); ++i)
     anchors.row(static_cast<Eigen::Index>(i)) = Position(set, m.datum[i]);
-  bool one_part = false;
-  const std::vector<bool> leave_out = LeaveOut(m, cloud, parts, anchors, &one_part);
+  const SectionMembers members = Members(m, cloud, parts, anchors);
   if (!m.narrowest_up_to.empty()) {
     point.z() = NarrowestSectionZ(o.section, cloud.points, cloud.normals, point.z(),
                                   Position(set, m.narrowest_up_to).z(), o.narrowest_step_mm,
-                                  o.narrowest_window, anchors, leave_out);
+                                  o.narrowest_window, anchors, members);
     anchors.col(2).setConstant(point.z());
   }
-  SectionGirth s = MeasureSectionGirth(o.section, cloud.points, cloud.normals, point, normal,
-                                       anchors, leave_out, one_part);
+  SectionGirth s =
+      MeasureSectionGirth(o.section, cloud.points, cloud.normals, point, normal, anchors, members);
   while (m.arms == "lower" && out.lowered_mm + o.lower_step_mm <= o.max_lower_mm && s.points > 0 &&
          ReachesPastDatum(s.part, m, set, o.arms_margin_mm)) {
     point.z() -= o.lower_step_mm;
     out.lowered_mm += o.lower_step_mm;
     s = MeasureSectionGirth(o.section, cloud.points, cloud.normals, point, normal, anchors,
-                            leave_out, one_part);
+                            members);
   }
   if (s.points == 0) throw Skip{"the girth plane misses the scan"};
   out.value_mm = s.girth_mm;
@@ -190,8 +194,7 @@ Measurement Girth(const MeasureOptions& o, const MeasurementDef& m, const PointC
     out.flags.push_back("section_crosses_midline");
   if (o.keep_geometry) out.geometry = s.hull;
   out.uncertainty_mm = Uncertainty95(
-      o.uncertainty,
-      GirthSd(o, m, cloud, set, point, normal, anchors, leave_out, one_part, s.girth_mm),
+      o.uncertainty, GirthSd(o, m, cloud, set, point, normal, anchors, members, s.girth_mm),
       scan.noise_mm, scan.spacing_mm, 0);
   return out;
 }

@@ -280,7 +280,8 @@ void ExpectSheetLeftOut(const Fixture& f, const std::string& name, const PointCl
 // An upper arm resting on the trunk: a sheet of trunk points pressed
 // against the inside of the right upper arm makes one section with the arm.
 // The arm's girth keeps the points of the arm's own part (the body
-// structure's), so the sheet never joins it.
+// structure's); the sheet's are gap points, but they lie where the arm's
+// inner side already is and face the arm, so they never join it.
 TEST(Measure, ArmGirthKeepsTheArmsOwnPoints) {
   LandmarkSet set = Scanned().landmarks;
   const PointCloud pressed =

@@ -230,6 +230,78 @@ double LargestGap(const std::vector<Vec2>& p, const Vec2& centre) {
   return gap;
 }
 
+struct GapPoint {
+  Vec2 at, normal;  // on the plane (mm); the normal's component in it
+};
+
+// Step 1: the slab's points on the plane (2-D), those of members.gap_only
+// into `reserve` with their normals on the plane (2-D, zero without
+// normals), those left out dropped.
+void SlabPoints(const SectionGirthOptions& options, const Eigen::MatrixX3d& cloud,
+                const Eigen::MatrixX3d& normals, const PlaneFrame& frame, const Vec3& plane_normal,
+                const SectionMembers& members, std::vector<Vec2>* slab,
+                std::vector<GapPoint>* reserve) {
+  const Eigen::VectorXd offset = (cloud.rowwise() - frame.origin.transpose()) * plane_normal;
+  for (Eigen::Index i = 0; i < cloud.rows(); ++i) {
+    const std::size_t k = static_cast<std::size_t>(i);
+    if (!(std::abs(offset(i)) <= options.half_thickness_mm)) continue;
+    if (!members.leave_out.empty() && members.leave_out[k]) continue;
+    Vec3 x = cloud.row(i).transpose();
+    if (normals.rows()) {
+      // Slide along the surface (its tangent closest to the plane normal)
+      // onto the plane: t = n - (n.s)s, moving by -offset / |t|^2 * t makes
+      // the offset 0. Points needing a longer slide than max_slide_mm lie
+      // where the surface is nearly parallel to the plane, off the section.
+      const Vec3 s = normals.row(i).transpose();
+      const Vec3 t = plane_normal - plane_normal.dot(s) * s;
+      const double slide = std::abs(offset(i)) / std::max(1e-9, t.norm());
+      if (!(slide <= options.max_slide_mm)) continue;  // nearly parallel: far from the section
+      x -= offset(i) / t.squaredNorm() * t;
+    }
+    if (members.gap_only.empty() || !members.gap_only[k]) {
+      slab->push_back(frame.To2d(x));
+      continue;
+    }
+    const Vec3 s = normals.rows() ? Vec3(normals.row(i).transpose()) : Vec3::Zero();
+    reserve->push_back({frame.To2d(x), Vec2(s.dot(frame.u), s.dot(frame.v))});
+  }
+}
+
+// Step 4: the points of `reserve` that continue the part's loop across its
+// angular gap, seen from LoopCentre: in a bin the part leaves empty (one bin
+// of margin), at the radius interpolated by angle between the part's nearest
+// occupied bins either side, within radius_tolerance of it. Returns how many
+// joined `part`.
+int JoinGapPoints(const SectionGirthOptions& options, const std::vector<GapPoint>& reserve,
+                  std::vector<Vec2>* part) {
+  if (reserve.empty() || part->size() < 3) return 0;
+  const Vec2 centre = LoopCentre(*part);
+  const Occupancy o = Occupy(*part, centre);
+  auto occupied = [&](int b) { return o.count[((b % kBins) + kBins) % kBins] > 0; };
+  auto nearest = [&](int from, int step, int* steps) {
+    for (*steps = 1; *steps < kBins; ++*steps)
+      if (occupied(from + step * *steps)) return ((from + step * *steps) % kBins + kBins) % kBins;
+    return -1;
+  };
+  std::vector<Vec2> joined;
+  const double min_cos = std::cos(options.gap_normal_max_deg * kTwoPi / 360);
+  for (const auto& [x, normal] : reserve) {
+    const double norm = normal.norm();  // short: the skin lies nearly in the plane, no cue
+    if (norm > 0.3 && normal.dot(x - centre) < min_cos * norm * (x - centre).norm()) continue;
+    const int b = BinOf(x - centre);
+    if (occupied(b) || occupied(b - 1) || occupied(b + 1)) continue;
+    int back = 0, ahead = 0;
+    const int before = nearest(b, -1, &back), after = nearest(b, +1, &ahead);
+    if (before < 0 || after < 0) continue;
+    const double expected =
+        o.radius[before] + (o.radius[after] - o.radius[before]) * back / (back + ahead);
+    if (std::abs((x - centre).norm() - expected) <= options.radius_tolerance * expected)
+      joined.push_back(x);
+  }
+  part->insert(part->end(), joined.begin(), joined.end());
+  return static_cast<int>(joined.size());
+}
+
 }  // namespace
 
 void SectionGirthOptions::Check() const {
@@ -239,6 +311,8 @@ void SectionGirthOptions::Check() const {
     throw InputError("section girth: need 0 < piece_gap_mm <= bridge_gap_mm");
   if (!(radius_tolerance > 0 && radius_tolerance < 1))
     throw InputError("section girth: radius_tolerance must be in (0, 1)");
+  if (!(gap_normal_max_deg > 0 && gap_normal_max_deg <= 180))
+    throw InputError("section girth: gap_normal_max_deg must be in (0, 180]");
   if (!(open_gap_mm > 0)) throw InputError("section girth: open_gap_mm must be > 0");
   if (!(max_slide_mm > 0)) throw InputError("section girth: max_slide_mm must be > 0");
   if (!(smooth_arc_mm >= 0)) throw InputError("section girth: smooth_arc_mm must be >= 0");
@@ -267,8 +341,7 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
                                  const Eigen::MatrixX3d& normals,
                                  const Eigen::Vector3d& plane_point,
                                  const Eigen::Vector3d& plane_normal,
-                                 const Eigen::MatrixX3d& anchors,
-                                 const std::vector<bool>& leave_out, bool one_part) {
+                                 const Eigen::MatrixX3d& anchors, const SectionMembers& members) {
   options.Check();
   if (std::abs(plane_normal.norm() - 1) > 1e-6 || !plane_point.allFinite())
     throw InputError("section girth: the plane needs a finite point and a unit normal");
@@ -276,27 +349,12 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
   const PlaneFrame frame = MakeFrame(plane_point, plane_normal);
   if (normals.rows() != 0 && normals.rows() != cloud.rows())
     throw InputError("section girth: normals must have one row per point, or none");
-  if (!leave_out.empty() && leave_out.size() != static_cast<std::size_t>(cloud.rows()))
-    throw InputError("section girth: leave_out must have one flag per point, or none");
+  for (const std::vector<bool>* flags : {&members.leave_out, &members.gap_only})
+    if (!flags->empty() && flags->size() != static_cast<std::size_t>(cloud.rows()))
+      throw InputError("section girth: member flags must have one per point, or none");
   std::vector<Vec2> slab;
-  const Eigen::VectorXd offset = (cloud.rowwise() - plane_point.transpose()) * plane_normal;
-  for (Eigen::Index i = 0; i < cloud.rows(); ++i) {
-    if (!(std::abs(offset(i)) <= options.half_thickness_mm)) continue;
-    if (!leave_out.empty() && leave_out[static_cast<std::size_t>(i)]) continue;
-    Vec3 x = cloud.row(i).transpose();
-    if (normals.rows()) {
-      // Slide along the surface (its tangent closest to the plane normal)
-      // onto the plane: t = n - (n.s)s, moving by -offset / |t|^2 * t makes
-      // the offset 0. Points needing a longer slide than max_slide_mm lie
-      // where the surface is nearly parallel to the plane, off the section.
-      const Vec3 s = normals.row(i).transpose();
-      const Vec3 t = plane_normal - plane_normal.dot(s) * s;
-      const double slide = std::abs(offset(i)) / std::max(1e-9, t.norm());
-      if (!(slide <= options.max_slide_mm)) continue;  // nearly parallel: far from the section
-      x -= offset(i) / t.squaredNorm() * t;
-    }
-    slab.push_back(frame.To2d(x));
-  }
+  std::vector<GapPoint> reserve;
+  SlabPoints(options, cloud, normals, frame, plane_normal, members, &slab, &reserve);
   SectionGirth out;
   out.points = static_cast<Eigen::Index>(slab.size());
   if (slab.empty()) return out;
@@ -336,7 +394,7 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
   taken[static_cast<std::size_t>(seed)] = true;
 
   // The limbs left out, every piece left is the part's.
-  for (std::size_t k = 0; one_part && k < pieces.size(); ++k) {
+  for (std::size_t k = 0; members.one_part && k < pieces.size(); ++k) {
     if (taken[k] || pieces[k].size() < static_cast<std::size_t>(options.min_piece_points)) continue;
     taken[k] = true;
     part.insert(part.end(), pieces[k].begin(), pieces[k].end());
@@ -359,7 +417,7 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
     }
     return pick;
   };
-  for (bool grew = !one_part; grew;) {
+  for (bool grew = !members.one_part; grew;) {
     grew = false;
     const Vec2 mean = Mean(part);
     int pick = pick_arc(mean);
@@ -376,6 +434,7 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
     }
   }
 
+  out.gap_points_joined = JoinGapPoints(options, reserve, &part);
   const Vec2 centre = Mean(part);
   out.largest_gap_mm = LargestGap(part, centre);
   out.open = out.largest_gap_mm > options.open_gap_mm;
@@ -398,15 +457,22 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
 namespace {
 
 // The points of `cloud` with z in [lo, hi] (mm), with their normals (when
-// given) and leave_out flags: a search over many levels slices this band
+// given) and member flags (one_part off: each level's part is the seed's
+// loop with its arcs): a search over many levels slices this band
 // instead of the whole cloud.
 struct Band {
   Eigen::MatrixX3d points, normals;
-  std::vector<bool> leave_out;
+  SectionMembers members;
 };
 
+std::vector<bool> RowsOf(const std::vector<bool>& flags, const std::vector<Eigen::Index>& rows) {
+  std::vector<bool> out(flags.empty() ? 0 : rows.size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = flags[static_cast<std::size_t>(rows[i])];
+  return out;
+}
+
 Band BandOf(const Eigen::MatrixX3d& cloud, const Eigen::MatrixX3d& normals,
-            const std::vector<bool>& leave_out, double lo, double hi) {
+            const SectionMembers& members, double lo, double hi) {
   std::vector<Eigen::Index> rows;
   for (Eigen::Index r = 0; r < cloud.rows(); ++r)
     if (cloud(r, 2) >= lo && cloud(r, 2) <= hi) rows.push_back(r);
@@ -414,13 +480,12 @@ Band BandOf(const Eigen::MatrixX3d& cloud, const Eigen::MatrixX3d& normals,
   Band band;
   band.points.resize(static_cast<Eigen::Index>(rows.size()), 3);
   band.normals.resize(with_normals ? band.points.rows() : 0, 3);
-  band.leave_out.resize(leave_out.empty() ? 0 : rows.size());
   for (size_t i = 0; i < rows.size(); ++i) {
     const Eigen::Index k = static_cast<Eigen::Index>(i);
     band.points.row(k) = cloud.row(rows[i]);
     if (with_normals) band.normals.row(k) = normals.row(rows[i]);
-    if (!leave_out.empty()) band.leave_out[i] = leave_out[static_cast<size_t>(rows[i])];
   }
+  band.members = {RowsOf(members.leave_out, rows), RowsOf(members.gap_only, rows), false};
   return band;
 }
 
@@ -429,18 +494,18 @@ Band BandOf(const Eigen::MatrixX3d& cloud, const Eigen::MatrixX3d& normals,
 double NarrowestSectionZ(const SectionGirthOptions& options, const Eigen::MatrixX3d& cloud,
                          const Eigen::MatrixX3d& normals, double z_from, double z_to,
                          double step_mm, int window, const Eigen::MatrixX3d& anchors,
-                         const std::vector<bool>& leave_out) {
+                         const SectionMembers& members) {
   if (!(step_mm > 0) || !(z_to > z_from) || window < 1) return z_from;
   // No slab is thicker than the widest one.
   const double margin = std::max(options.half_thickness_mm, options.max_half_thickness_mm) + 1;
-  const Band band = BandOf(cloud, normals, leave_out, z_from - margin, z_to + margin);
+  const Band band = BandOf(cloud, normals, members, z_from - margin, z_to + margin);
   std::vector<double> z, girth;
   Eigen::MatrixX3d at = anchors;
   for (double level = z_from; level <= z_to; level += step_mm) {
     at.col(2).setConstant(level);
     const SectionGirth s =
         MeasureSectionGirth(options, band.points, band.normals, Eigen::Vector3d(0, 0, level),
-                            Eigen::Vector3d::UnitZ(), at, band.leave_out);
+                            Eigen::Vector3d::UnitZ(), at, band.members);
     if (s.points == 0) continue;
     z.push_back(level), girth.push_back(s.girth_mm);
   }

@@ -19,19 +19,24 @@
 //                (seen from the seed's centre) and at the radius the seed has
 //                on both sides of that gap, i.e. it continues the same loop.
 //                A hand beside the hip lies farther out and stays outside;
-//   4. hull      perimeter of the 2-D convex hull of the part's points (the
+//   4. gap points `members.gap_only` (the trunk beside an arm's girth) join
+//                the part one by one: a point in a bin the part leaves empty,
+//                at the radius interpolated between the part's nearest
+//                occupied bins on either side (within radius_tolerance), its
+//                normal turned at most gap_normal_max_deg from the direction
+//                out of the centre. Where an arm rests on the trunk the scan
+//                merges the two skins and the body structure may give the
+//                arm's inner side to the trunk; the trunk's own skin lies
+//                farther out and, under the arm, faces it;
+//   5. hull      perimeter of the 2-D convex hull of the part's points (the
 //                tape bridges concavities and holes alike). Optional
 //                denoising first: the mean of the points in angular bins of
 //                smooth_arc_mm of arc, so range noise does not push the hull
 //                outwards.
 // `open` is set when, going round the part by angle, two consecutive points
 // are more than open_gap_mm apart: the hull bridged a scan hole there.
-//
 // Input: #P x 3 cloud (body frame, mm), #P x 3 unit normals or 0 x 3, a plane (point, unit normal),
-// #D x 3 anchors (D >= 1), `leave_out`: #P flags of points of other body parts that never belong to
-// the section (the arms beside a trunk girth, from the body structure), or empty; `one_part`: every
-// point not left out belongs to the part (a trunk girth with the limbs left out), so the part is
-// every piece of at least min_piece_points, however the scan's holes cut the loop. Output:
+// #D x 3 anchors (D >= 1), `members` (SectionMembers: which points may join). Output:
 // SectionGirth (mm). Failure: InputError for bad options or a non-unit normal; a plane that misses
 // the cloud gives `points == 0` and girth 0 (the caller flags or skips it), never a throw.
 #ifndef BESPOKE_MEASURE_MEASUREMENTS_SECTION_GIRTH_H_
@@ -48,8 +53,12 @@ struct SectionGirthOptions {
   double piece_gap_mm = 12.0;      // default 12 mm: 2-D points closer than this are one piece
   double bridge_gap_mm = 150.0;    // default 150 mm: widest hole a loop is joined across
   double radius_tolerance =
-      0.25;                   // default 0.25: an arc's radius may differ this share from the loop's
-  double open_gap_mm = 30.0;  // default 30 mm: a longer gap between neighbours marks the loop open
+      0.25;  // default 0.25: an arc's radius may differ this share from the loop's
+  // default 60 deg: a gap point whose normal (on the plane) turns farther
+  // than this from the direction out of the part's centre faces the part
+  // (the trunk's skin under an arm) and stays outside (step 4)
+  double gap_normal_max_deg = 60.0;
+  double open_gap_mm = 30.0;   // default 30 mm: a longer gap between neighbours marks the loop open
   double smooth_arc_mm = 6.0;  // default 6 mm: angular bin width of the denoising mean (0 = off)
   int min_piece_points = 4;    // default 4: smaller pieces are noise (unless nothing else)
   // default 4: SlabForSpacing widens the slab of a sparse scan until a
@@ -62,13 +71,27 @@ struct SectionGirthOptions {
   void Check() const;                 // InputError when out of range
 };
 
+// Which cloud points a section may hold: #P flags each, or empty (none).
+struct SectionMembers {
+  // Points of other body parts, never in the section (the arms beside a
+  // trunk girth, from the body structure).
+  std::vector<bool> leave_out;
+  // Points that join the part only one by one across its gap (step 4).
+  std::vector<bool> gap_only;
+  // Every point not left out belongs to the part (a trunk girth with the
+  // limbs left out): every piece of at least min_piece_points, however the
+  // scan's holes cut the loop.
+  bool one_part = false;
+};
+
 struct SectionGirth {
   double girth_mm = 0;           // hull perimeter of the part
   Eigen::MatrixX3d hull;         // #K x 3 hull polygon on the plane (closed implicitly), mm
   Eigen::MatrixX3d part;         // #Q x 3 the part's slab points projected onto the plane, mm
-  Eigen::Index points = 0;       // slab points (all pieces)
+  Eigen::Index points = 0;       // slab points (all pieces; gap points not counted)
   int pieces = 0;                // pieces in the slab
   int pieces_joined = 0;         // pieces joined to the seed across holes
+  int gap_points_joined = 0;     // members.gap_only points joined (step 4)
   double largest_gap_mm = 0;     // widest gap between angular neighbours of the part
   bool open = false;             // largest_gap_mm > open_gap_mm
   bool anchor_enclosed = false;  // the seed was chosen by enclosing the anchors' centroid
@@ -91,18 +114,19 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
                                  const Eigen::Vector3d& plane_point,
                                  const Eigen::Vector3d& plane_normal,
                                  const Eigen::MatrixX3d& anchors,
-                                 const std::vector<bool>& leave_out = {}, bool one_part = false);
+                                 const SectionMembers& members = {});
 
 // The height (mm) in [z_from, z_to] of the smallest horizontal section: the
 // part's girth every step_mm (each with the anchors moved to that height),
 // the median of `window` neighbouring levels so that one noisy or broken
 // section (a sliver the anchor picks between two holes) does not decide,
 // and the level of the smallest median. z_from when no level cuts the cloud
-// or z_to <= z_from. Arguments as MeasureSectionGirth.
+// or z_to <= z_from. Arguments as MeasureSectionGirth (members.one_part is
+// not used: each level's part is the seed's loop with its arcs).
 double NarrowestSectionZ(const SectionGirthOptions& options, const Eigen::MatrixX3d& cloud,
                          const Eigen::MatrixX3d& normals, double z_from, double z_to,
                          double step_mm, int window, const Eigen::MatrixX3d& anchors,
-                         const std::vector<bool>& leave_out = {});
+                         const SectionMembers& members = {});
 
 }  // namespace bespoke
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <random>
 #include <vector>
@@ -193,8 +194,8 @@ TEST(SectionGirth, TrunkLeavesOutTheArmsRestingOnIt) {
   EXPECT_GT(Girth(cloud, sides).girth_mm, alone_mm + 100);  // the slab alone: arms included
   std::vector<bool> arms(cloud.size(), false);
   std::fill(arms.begin() + static_cast<std::ptrdiff_t>(trunk_points), arms.end(), true);
-  const SectionGirth g =
-      MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), kPlane, kUp, sides, arms, true);
+  const SectionGirth g = MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), kPlane, kUp,
+                                             sides, {arms, {}, true});
   EXPECT_NEAR(g.girth_mm, alone_mm, 0.5);    // mm
   EXPECT_LT(g.part.col(0).maxCoeff(), 156);  // mm: the trunk's side plus the noise
 }
@@ -214,13 +215,73 @@ TEST(SectionGirth, TrunkCutByHolesUnderTheArmsIsOnePart) {
   std::fill(arms.begin() + static_cast<std::ptrdiff_t>(trunk_points), arms.end(), true);
   const Eigen::MatrixX3d sides = (Eigen::MatrixX3d(2, 3) << 150, 0, 100, -150, 0, 100).finished();
   const double expected = 2 * (kPi - 2 * hole) * r + 2 * 2 * r * std::sin(hole);  // arcs + chords
-  const SectionGirth g =
-      MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), kPlane, kUp, sides, arms, true);
+  const SectionGirth g = MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), kPlane, kUp,
+                                             sides, {arms, {}, true});
   // Each arc's end lies up to one spacing (4 mm of arc) inside its hole's
   // edge, which shortens the tape by up to 4 * 4 mm * (1 - cos 40 deg) = 3.7 mm.
   EXPECT_LT(g.girth_mm, expected + 0.5);  // mm
   EXPECT_GT(g.girth_mm, expected - 3.8);  // mm
   EXPECT_GE(g.pieces, 2);
+}
+
+// An arm (r 50 mm, centre x `arm_x`) beside a trunk (r 150), 1 mm noise;
+// each skin's points inside the other are hidden. The arm's inner side
+// (within 50 deg of the trunk) is labelled trunk, as the body structure
+// does where the two touch, or not scanned at all (`inner_scanned` false).
+// The trunk's points and those labelled trunk are the arm girth's gap points.
+struct ArmBesideTrunk {
+  std::vector<Eigen::Vector3d> cloud;
+  std::vector<bool> trunk;  // labelled trunk
+  SectionGirth Measure(bool gap_points) const {
+    SectionMembers members;
+    (gap_points ? members.gap_only : members.leave_out) = trunk;
+    return MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), kPlane, kUp,
+                               Eigen::RowVector3d(cloud[0].x(), 0, 100), members);
+  }
+};
+
+ArmBesideTrunk Arm(double arm_x, bool inner_scanned) {
+  const double inner_x = arm_x - 50 * std::cos(50 * kPi / 180);
+  ArmBesideTrunk a;
+  Sample(
+      Circle(50, arm_x), 3,
+      [&](double t) {
+        const double x = arm_x + 50 * std::cos(t);
+        return x > 150 && (inner_scanned || x > inner_x);
+      },
+      1.0, &a.cloud, 2);
+  for (const Eigen::Vector3d& p : a.cloud) a.trunk.push_back(p.x() < inner_x);
+  auto outside_arm = [&](double t) {
+    return std::hypot(150 * std::cos(t) - arm_x, 150 * std::sin(t)) > 50;
+  };
+  Sample(Circle(150), 4, outside_arm, 1.0, &a.cloud, 3);
+  a.trunk.resize(a.cloud.size(), true);
+  return a;
+}
+
+TEST(SectionGirth, ArmPressedOnTheTrunkTakesBackItsInnerSide) {
+  const ArmBesideTrunk a = Arm(197, true);
+  const double arm_mm = 2 * kPi * 50;  // less the 3 mm deep cap the trunk hides: under 1 mm
+  const SectionGirth left_out = a.Measure(false), g = a.Measure(true);
+  std::printf("arm pressed on the trunk: %.1f mm with gap points, %.1f mm without; 2 pi r %.1f\n",
+              g.girth_mm, left_out.girth_mm, arm_mm);
+  EXPECT_LT(left_out.girth_mm, arm_mm - 8);  // mm: a chord over the inner 100 deg
+  EXPECT_NEAR(g.girth_mm, arm_mm, 2.0);      // mm
+  EXPECT_GT(g.gap_points_joined, 10);
+  EXPECT_LT(g.part.col(0).minCoeff(), 152);  // mm: the inner side is back
+  EXPECT_GT(g.part.col(0).minCoeff(), 140);  // mm: the trunk (out to x = -150) is not
+}
+
+// The arm hanging 20 mm from the trunk, its inner side a scan hole: the
+// trunk's skin across the hole is farther out than the arm and faces it, so
+// the tape spans the hole with a chord, as with the trunk left out.
+TEST(SectionGirth, TrunkBesideAnArmsHoleStaysOutside) {
+  const ArmBesideTrunk a = Arm(220, false);
+  const SectionGirth left_out = a.Measure(false);
+  EXPECT_LT(left_out.girth_mm, 2 * kPi * 50 - 8);  // mm: the chord
+  const SectionGirth g = a.Measure(true);
+  EXPECT_EQ(g.gap_points_joined, 0);
+  EXPECT_NEAR(g.girth_mm, left_out.girth_mm, 0.01);  // mm
 }
 
 TEST(SectionGirth, SmoothingRemovesTheNoiseBias) {
