@@ -315,6 +315,47 @@ TEST(DefinedLandmarks, TheCalfIsTheBulgeOfTheLowerLeg) {
     EXPECT_LE(LegGirthAt(body, z, near), girth + 0.5) << z;
 }
 
+// The upper-arm point by definition: midway between the shoulder point and
+// the elbow along that axis, the outermost point of the arm's section
+// perpendicular to it. The table's vertex (1704 / 8376) drifts along the arm
+// with its shape and posture.
+TEST(DefinedLandmarks, TheUpperArmPointIsMidwayOnTheArmsOutside) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(MakeHumanDir(shared));
+  for (std::uint64_t seed : {2, 1005}) {
+    MakeHumanBodyOptions o;
+    o.seed = seed;
+    o.population = seed > 1000 ? "full" : "default";
+    const Body body = GenerateMakeHumanBody(o, &model);
+    o.defined_landmarks = false;
+    const Body table = GenerateMakeHumanBody(o, &model);
+    for (const std::string side : {"right", "left"}) {
+      SCOPED_TRACE(std::to_string(seed) + " " + side);
+      const Eigen::Vector3d shoulder = At(body, "shoulder_" + side),
+                            elbow = At(body, "elbow_" + side);
+      const Eigen::Vector3d axis = (elbow - shoulder).normalized(),
+                            p = At(body, "upper_arm_" + side);
+      const double half = 0.5 * (elbow - shoulder).norm();
+      EXPECT_NEAR((p - shoulder).dot(axis), half, 0.5);  // mm
+      const Eigen::Vector3d lateral(side == "right" ? 1 : -1, 0, 0);
+      const Eigen::Vector3d outward = (lateral - lateral.dot(axis) * axis).normalized();
+      const auto loops = SectionLoops(body.mesh, p, axis);
+      const int arm = NearestLoop(loops, p);
+      ASSERT_GE(arm, 0);
+      const SectionLoop& loop = loops[static_cast<std::size_t>(arm)];
+      EXPECT_LT(DistanceToLoop(loop, p), 0.5);                              // mm
+      EXPECT_LE((loop.points * outward).maxCoeff(), p.dot(outward) + 0.5);  // mm
+      // Outside the axis (the acromion sits on the shoulder's outer edge, so
+      // the axis runs just inside the arm's outside).
+      EXPECT_GT((p - shoulder - (p - shoulder).dot(axis) * axis).dot(outward), 0);
+      const double table_t = (At(table, "upper_arm_" + side) - shoulder).dot(axis);
+      std::printf("seed %d %s: upper arm %.1f mm down the %.1f mm axis; the table's vertex %.1f\n",
+                  static_cast<int>(seed), side.c_str(), (p - shoulder).dot(axis), 2 * half,
+                  table_t);
+    }
+  }
+}
+
 // The ankle girth by ISO 8559-1 is the minimum girth above the malleoli. On
 // these bodies the leg's section narrows for 40-80 mm above the outer ankle
 // bone (at the bone the horizontal plane also cuts the heel and instep and

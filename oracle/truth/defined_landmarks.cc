@@ -146,6 +146,25 @@ double LegGirth(const TriangleMesh& mesh, double z, const Eigen::Vector3d& near,
   return LoopHullPerimeter(loop, kUp);
 }
 
+// The upper-arm point of `side` ("right" / "left"): in the plane through the
+// midpoint of the shoulder point and the elbow, perpendicular to that axis,
+// the arm's loop (enclosing the midpoint, else the nearest) and its point
+// farthest outwards (lateral, across the axis).
+Eigen::Vector3d UpperArmPoint(const Body& body, const std::string& side) {
+  const Eigen::Vector3d shoulder = At(body, "shoulder_" + side), elbow = At(body, "elbow_" + side);
+  const Eigen::Vector3d axis = (elbow - shoulder).normalized(), mid = 0.5 * (shoulder + elbow);
+  const Eigen::Vector3d lateral(side == "right" ? 1 : -1, 0, 0);
+  const Eigen::Vector3d outward = (lateral - lateral.dot(axis) * axis).normalized();
+  const std::vector<SectionLoop> loops = SectionLoops(body.mesh, mid, axis);
+  int arm = EnclosingLoop(loops, mid, axis);
+  if (arm < 0) arm = NearestLoop(loops, mid);
+  if (arm < 0) throw InputError("defined landmarks: no section of the " + side + " upper arm");
+  const Eigen::MatrixX3d& p = loops[static_cast<std::size_t>(arm)].points;
+  Eigen::Index best = 0;
+  ((p.rowwise() - mid.transpose()) * outward).maxCoeff(&best);
+  return p.row(best).transpose();
+}
+
 }  // namespace
 
 void DefinedLandmarkOptions::Check() const {
@@ -209,6 +228,8 @@ DefinedLevels PlaceDefinedLandmarks(const DefinedLandmarkOptions& options,
         (lowest < 0 || mesh.vertices(v, 2) < mesh.vertices(lowest, 2)))
       lowest = v;
   if (lowest >= 0) Place(body, "crotch", mesh.vertices.row(lowest).transpose());
+  for (const char* side : {"right", "left"})
+    Place(body, std::string("upper_arm_") + side, UpperArmPoint(*body, side));
   // Calves: the largest leg girth between ankle and knee that lies below a
   // narrower section (the calf's bulge; BulgeArgMax).
   for (const char* side : {"right", "left"}) {

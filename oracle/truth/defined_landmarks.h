@@ -35,6 +35,9 @@
 //     a section 3 mm of girth smaller above it in that band (the calf's
 //     bulge, not the widening below the knee); the band's largest girth
 //     where no level has.
+//   upper_arm_*: midway between the shoulder point and the elbow, the
+//     outermost point (lateral, across the axis) of the arm's section
+//     perpendicular to that axis.
 // Points not listed here stay as given (anatomical points: cervicale,
 // acromion, malleoli, ...). Each moved point becomes the surface point
 // closest to its position.
@@ -63,7 +66,7 @@ struct DefinedLevels {
 // Moves the defined datum points of `body` (in place) to where their
 // definitions put them. `seam`: the mesh's mid-sagittal vertices (for the
 // crotch; empty keeps the crotch). Needs crotch, bust_*, knee_*,
-// ankle_inside_* and calf_* to start from; InputError when one is missing or
+// ankle_inside_*, calf_*, shoulder_* and elbow_* to start from; InputError when one is missing or
 // a section is empty.
 DefinedLevels PlaceDefinedLandmarks(const DefinedLandmarkOptions& options,
                                     const std::vector<int>& seam, Body* body);
