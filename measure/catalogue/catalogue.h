@@ -62,9 +62,11 @@ struct MeasurementDef {
   bool to_floor = false;           // kGeodesic: add the last datum point's height
   // Horizontal trunk girths whose datum points include the left and right
   // sides: "check" flags a section reaching > 30 mm beyond them (arms or
-  // hands merged into it); "lower" also moves the plane down in 1 mm steps
-  // (up to 100 mm) until the trunk's section is free (chest: "just under the
-  // armpits"); "" (default) neither.
+  // hands merged into it); "lower": the section just under them, free of the
+  // arms (chest: "just under the armpits"; the reference moves the plane
+  // down in 1 mm steps, up to 100, until the mesh's trunk loop is free of the
+  // arm loops, the scan's measurement keeps the points between the datum
+  // points' x); "" (default) neither.
   std::string arms;
   // Horizontal limb girths: the plane moves up from datum[0]'s height to this
   // landmark's height and the girth is the smallest section there (ankle:

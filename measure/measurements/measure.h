@@ -7,9 +7,8 @@
 //   girth (section_hull)  MeasureSectionGirth (section_girth.h) in the
 //         catalogue's plane: horizontal at the mean height of the datum
 //         points; through datum[0] perpendicular to axis[0] -> axis[1]; or
-//         through the three datum points. arms "lower" moves a horizontal
-//         plane down (lower_step_mm steps, up to max_lower_mm) until the
-//         trunk's section is free of the arms (chest: just under the armpits).
+//         through the three datum points. arms "lower" (chest: just under
+//         the armpits) keeps the points between the datum points' x.
 //   length geodesic: CloudGeodesics::Between along the datum chain (one grid
 //         per scan, shared by every length), + the last point's height when
 //         to_floor; breadth: horizontal distance; point_to_line: 3-D
@@ -62,8 +61,6 @@ struct MeasureOptions {
   double datum_tolerance_mm = 20;   // default 20 mm: "datum_off_section" / "datum_off_scan"
   double max_bridge_mm = 120;    // default 120 mm: a datum point this far in a scan hole is bridged
   double arms_margin_mm = 30;    // default 30 mm: "section_includes_arms" beyond the datums' x
-  double lower_step_mm = 2;      // default 2 mm: arms "lower" plane step
-  double max_lower_mm = 100;     // default 100 mm: arms "lower" limit
   double narrowest_step_mm = 2;  // default 2 mm: level step of a "narrowest_up_to" girth
   int narrowest_window = 5;      // default 5: levels whose median is compared there
   double uncertain_confidence = 0.5;  // default 0.5: below it a landmark is "uncertain"
@@ -90,9 +87,8 @@ struct Measurement {
   // geodesic -> the path (#K x 3, chain pieces concatenated); breadth and
   // point_to_line -> the two end points; height -> the point and its floor foot.
   Eigen::MatrixX3d geometry;
-  // Girths: the plane used (body frame, mm), lowered when arms "lower" moved it.
+  // Girths: the plane used (body frame, mm).
   Eigen::Vector3d plane_point = Eigen::Vector3d::Zero(), plane_normal = Eigen::Vector3d::Zero();
-  double lowered_mm = 0;      // how far arms "lower" moved the plane
   double largest_gap_mm = 0;  // girths: widest hole bridged by the hull
   // Geodesic lengths: how much of value_mm was bridged across unscanned
   // skin (the crotch, an armpit) rather than measured over the scan.

@@ -289,6 +289,45 @@ TEST(Measure, ArmGirthKeepsTheArmsOwnPoints) {
   ExpectSheetLeftOut(Scanned(), "upper_arm_girth", pressed, set);
 }
 
+// Where arm and trunk meet, the scan's armpit folds are one skin and the
+// structure's boundary can run out along them: a fin of points labelled
+// trunk from 5 to 50 mm outside the right armpit, 100 mm below it to 10 mm
+// above. The chest (arms "lower") keeps the points between the armpits'
+// x, so the fin stays out; moving the plane down until the trunk's part is
+// free of it cannot get below the fin.
+TEST(Measure, ChestKeepsTheTrunkBetweenTheArmpits) {
+  const Fixture& f = Scanned();
+  LandmarkSet set = f.landmarks;
+  set.parts = FindBodyParts(f.clean.cloud);
+  const Eigen::Vector3d armpit = set.points.at("armpit_right").position_mm;
+  PointCloud folded = f.clean.cloud;
+  std::vector<Eigen::Vector3d> fin;
+  for (double x = 5; x <= 50; x += 3)
+    for (double z = -100; z <= 10; z += 3) fin.push_back(armpit + Eigen::Vector3d(x, 0, z));
+  const Eigen::Index rows = folded.size();
+  folded.points.conservativeResize(rows + static_cast<Eigen::Index>(fin.size()), 3);
+  folded.normals.conservativeResize(folded.points.rows(), 3);
+  for (std::size_t k = 0; k < fin.size(); ++k) {
+    folded.points.row(rows + static_cast<Eigen::Index>(k)) = fin[k].transpose();
+    folded.normals.row(rows + static_cast<Eigen::Index>(k)) = Eigen::RowVector3d(0, 1, 0);
+  }
+  set.parts.resize(static_cast<std::size_t>(folded.size()), ScanPart::kTrunk);
+  MeasureOptions only;
+  only.only = {"chest_girth"};
+  double truth = 0;
+  for (const ReferenceMeasurement& r : f.truth.measurements)
+    if (r.name == "chest_girth") truth = r.value_mm;
+  const Measurement* plain =
+      Measure(only, Catalogue::Builtin(), f.clean.cloud, f.landmarks).Find("chest_girth");
+  const Measurement* chest = Measure(only, Catalogue::Builtin(), folded, set).Find("chest_girth");
+  ASSERT_NE(plain, nullptr);
+  ASSERT_NE(chest, nullptr);
+  std::printf("chest girth %.1f mm with a fin at the armpit, %.1f without; truth %.1f mm\n",
+              chest->value_mm, plain->value_mm, truth);
+  EXPECT_NEAR(chest->value_mm, plain->value_mm, 0.5);  // mm: the fin stays out
+  EXPECT_NEAR(chest->value_mm, truth, 9.0);            // mm: ISO 20685-1's large-girth limit
+}
+
 // Thighs that touch: the other leg's skin 8 mm from the inside of the right
 // thigh (closer than the 12 mm piece gap) is one section with it; a leg's
 // girth leaves the other leg out.

@@ -24,7 +24,6 @@ nlohmann::json MeasurementJson(const Measurement& m, bool with_geometry) {
   if (m.method == MeasurementMethod::kGeodesic) j["bridged_mm"] = Round2(m.bridged_mm);
   if (m.kind == MeasurementKind::kGirth) {
     j["largest_gap_mm"] = Round2(m.largest_gap_mm);
-    j["lowered_mm"] = Round2(m.lowered_mm);
     j["plane"] = {{"point", Point(m.plane_point)}, {"normal", ToJson(m.plane_normal)}};
   }
   if (with_geometry) {
@@ -113,8 +112,6 @@ nlohmann::json ToJson(const MeasureOptions& o) {
             {"polish", o.geodesics.polish}}},
           {"datum_tolerance_mm", o.datum_tolerance_mm},
           {"arms_margin_mm", o.arms_margin_mm},
-          {"lower_step_mm", o.lower_step_mm},
-          {"max_lower_mm", o.max_lower_mm},
           {"narrowest_step_mm", o.narrowest_step_mm},
           {"narrowest_window", o.narrowest_window},
           {"uncertain_confidence", o.uncertain_confidence},

@@ -9,7 +9,7 @@
 //                         "flags": [], "method": "section_hull",
 //                         "datum": ["bust_right", "bust_left"],
 //                         "uncertain_landmarks": [...],          // when any
-//                         "largest_gap_mm": 12.1, "lowered_mm": 0, // girths
+//                         "largest_gap_mm": 12.1,                // girths
 //                         "geometry": [[x, y, z], ...] }, ... ],  // with_geometry only
 //     "skipped": [ { "name": "...", "reason": "..." } ],
 //     "timings": [ { "name": "girths", "time_s": 0.1, "cpu_s": 0.1 }, ... ] }
