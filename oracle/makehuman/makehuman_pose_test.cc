@@ -322,10 +322,11 @@ TEST(DefinedLandmarks, TheCalfIsTheBulgeOfTheLowerLeg) {
 TEST(DefinedLandmarks, TheUpperArmPointIsMidwayOnTheArmsOutside) {
   BESPOKE_REQUIRE_SHARED(shared);
   MakeHumanModel model(MakeHumanDir(shared));
-  for (std::uint64_t seed : {2, 1005}) {
-    MakeHumanBodyOptions o;
-    o.seed = seed;
-    o.population = seed > 1000 ? "full" : "default";
+  MakeHumanBodyOptions o;
+  for (const auto& [seed, population] :
+       {std::pair<int, const char*>{2, "default"}, {1005, "full"}}) {
+    o.seed = static_cast<std::uint64_t>(seed), o.population = population;
+    o.defined_landmarks = true;
     const Body body = GenerateMakeHumanBody(o, &model);
     o.defined_landmarks = false;
     const Body table = GenerateMakeHumanBody(o, &model);
@@ -350,8 +351,7 @@ TEST(DefinedLandmarks, TheUpperArmPointIsMidwayOnTheArmsOutside) {
       EXPECT_GT((p - shoulder - (p - shoulder).dot(axis) * axis).dot(outward), 0);
       const double table_t = (At(table, "upper_arm_" + side) - shoulder).dot(axis);
       std::printf("seed %d %s: upper arm %.1f mm down the %.1f mm axis; the table's vertex %.1f\n",
-                  static_cast<int>(seed), side.c_str(), (p - shoulder).dot(axis), 2 * half,
-                  table_t);
+                  seed, side.c_str(), (p - shoulder).dot(axis), 2 * half, table_t);
     }
   }
 }
