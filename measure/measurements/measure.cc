@@ -161,9 +161,9 @@ SectionMembers Members(const MeasurementDef& m, const PointCloud& cloud,
 // between the datum points' x (the armpits), so the tape's sides pass under
 // them. Where arm and trunk meet, the scan shows one skin over the armpit
 // folds and the structure's boundary runs 15-20 mm out along them; moving
-// the plane down until the trunk's part is free of the arms went down to
-// where a heavy body's arms stop touching it (68 mm on MakeHuman full seed 1
-// subject 5, +65 mm of girth at the true datum points).
+// the plane down until the trunk's part is free of the arms would go down
+// to where a heavy body's arms stop touching it (68 mm on MakeHuman full
+// seed 1 subject 5, +65 mm of girth at the true datum points).
 void KeepBetweenDatums(const MeasurementDef& m, const LandmarkSet& set, const PointCloud& cloud,
                        SectionMembers* members) {
   double lo = 0, hi = 0;
