@@ -230,6 +230,22 @@ double LargestGap(const std::vector<Vec2>& p, const Vec2& centre) {
   return gap;
 }
 
+// The distance (mm) between the two points of `p` angularly either side of
+// `q`, seen from `centre`: the width of the hole `q` lies in, or the
+// spacing of the loop where it is whole.
+double GapAround(const std::vector<Vec2>& p, const Vec2& centre, const Vec2& q) {
+  const double at = std::atan2(q.y() - centre.y(), q.x() - centre.x());
+  double before = -kTwoPi, after = kTwoPi;  // angular offsets from q, wrapped to (-pi, pi]
+  Vec2 a = q, b = q;
+  for (const Vec2& x : p) {
+    double d = std::atan2(x.y() - centre.y(), x.x() - centre.x()) - at;
+    d = std::remainder(d, kTwoPi);
+    if (d <= 0 && d > before) before = d, a = x;
+    if (d > 0 && d < after) after = d, b = x;
+  }
+  return (a - b).norm();
+}
+
 struct GapPoint {
   Vec2 at, normal;  // on the plane (mm); the normal's component in it
 };
@@ -352,6 +368,8 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
   for (const std::vector<bool>* flags : {&members.leave_out, &members.gap_only})
     if (!flags->empty() && flags->size() != static_cast<std::size_t>(cloud.rows()))
       throw InputError("section girth: member flags must have one per point, or none");
+  if (!members.tape_points.allFinite())
+    throw InputError("section girth: tape points must be finite");
   std::vector<Vec2> slab;
   std::vector<GapPoint> reserve;
   SlabPoints(options, cloud, normals, frame, plane_normal, members, &slab, &reserve);
@@ -438,8 +456,12 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
   const Vec2 centre = Mean(part);
   out.largest_gap_mm = LargestGap(part, centre);
   out.open = out.largest_gap_mm > options.open_gap_mm;
-  const std::vector<Vec2> outline =
+  std::vector<Vec2> outline =
       options.smooth_arc_mm > 0 ? Denoise(part, centre, options.smooth_arc_mm) : part;
+  for (Eigen::Index t = 0; t < members.tape_points.rows(); ++t) {
+    const Vec2 q = frame.To2d(members.tape_points.row(t).transpose());
+    if (GapAround(part, centre, q) > options.open_gap_mm) outline.push_back(q);
+  }
   const Eigen::MatrixX2d m = ToMatrix(outline);
   const std::vector<int> hull = ConvexHullIndices(m);
   out.hull.resize(static_cast<Eigen::Index>(hull.size()), 3);
@@ -485,7 +507,8 @@ Band BandOf(const Eigen::MatrixX3d& cloud, const Eigen::MatrixX3d& normals,
     band.points.row(k) = cloud.row(rows[i]);
     if (with_normals) band.normals.row(k) = normals.row(rows[i]);
   }
-  band.members = {RowsOf(members.leave_out, rows), RowsOf(members.gap_only, rows), false};
+  band.members = {RowsOf(members.leave_out, rows), RowsOf(members.gap_only, rows), false,
+                  members.tape_points};
   return band;
 }
 

@@ -28,8 +28,11 @@
 //                merges the two skins and the body structure may give the
 //                arm's inner side to the trunk; the trunk's own skin lies
 //                farther out and, under the arm, faces it;
-//   5. hull      perimeter of the 2-D convex hull of the part's points (the
-//                tape bridges concavities and holes alike). Optional
+//   5. hull      perimeter of the 2-D convex hull of the part's points and
+//                of each of `members.tape_points` that lies in a hole of the
+//                loop (its angular neighbours in the part farther apart than
+//                open_gap_mm; where the skin is scanned, the skin decides).
+//                The tape bridges concavities and holes alike. Optional
 //                denoising first: the mean of the points in angular bins of
 //                smooth_arc_mm of arc, so range noise does not push the hull
 //                outwards.
@@ -82,6 +85,11 @@ struct SectionMembers {
   // limbs left out): every piece of at least min_piece_points, however the
   // scan's holes cut the loop.
   bool one_part = false;
+  // #T x 3 points off the cloud the tape passes over where the loop has a
+  // hole (mm, body frame), projected onto the plane (step 5): the armpits
+  // under a chest's tape, where a booth leaves the trunk's sides unscanned.
+  // Empty: none.
+  Eigen::MatrixX3d tape_points;
 };
 
 struct SectionGirth {

@@ -127,6 +127,43 @@ TEST(SectionGirth, HoleSplittingTheLoopIsBridged) {
   EXPECT_GT(g.largest_gap_mm, 45);
 }
 
+// The trunk's sides under the arms unscanned (50-degree holes on either
+// side): the tape still passes over the armpits, given as tape points off
+// the plane (5 mm below and above it), and spans each hole with two chords
+// through them; without them, one chord across. Where the loop is scanned
+// the skin decides: a tape point inside it or 20 mm outside changes nothing.
+TEST(SectionGirth, TapePassesOverItsPointsAcrossAHole) {
+  std::vector<Eigen::Vector3d> cloud;
+  auto keep = [](double t) {
+    const double deg = t * 180 / kPi;
+    return !(deg < 25 || deg > 335 || (deg > 155 && deg < 205));
+  };
+  Sample(Circle(150), 4, keep, 0, &cloud);
+  const Eigen::Matrix<double, 2, 3> anchors{{150, 0, 95}, {-150, 0, 105}};
+  SectionMembers members;
+  members.tape_points = anchors;
+  const SectionGirth with =
+      MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), kPlane, kUp, anchors, members);
+  const SectionGirth without =
+      MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), kPlane, kUp, anchors);
+  const double arc = 150 * 50 * kPi / 180, half_chord = 2 * 150 * std::sin(12.5 * kPi / 180);
+  const double chord = 2 * 150 * std::sin(25 * kPi / 180);
+  EXPECT_NEAR(with.girth_mm, 2 * kPi * 150 - 2 * (arc - 2 * half_chord),
+              2.0);  // mm (chord ends sampled 4 mm apart)
+  EXPECT_NEAR(without.girth_mm, 2 * kPi * 150 - 2 * (arc - chord), 2.0);  // mm
+  EXPECT_TRUE(with.open);  // the scan's hole is still reported
+  std::vector<Eigen::Vector3d> full;
+  Sample(Circle(150), 4, All, 0, &full);
+  members.tape_points = Eigen::Matrix<double, 2, 3>{{100, 0, 100}, {-170, 0, 100}};
+  const SectionGirth whole = MeasureSectionGirth({}, ToMatrix(full), ToMatrix(g_normals), kPlane,
+                                                 kUp, Eigen::RowVector3d(150, 0, 100), members);
+  EXPECT_NEAR(whole.girth_mm, 2 * kPi * 150, 0.5);  // mm
+  members.tape_points(0, 0) = std::nan("");
+  EXPECT_THROW(MeasureSectionGirth({}, ToMatrix(full), ToMatrix(g_normals), kPlane, kUp,
+                                   Eigen::RowVector3d(150, 0, 100), members),
+               InputError);
+}
+
 TEST(SectionGirth, ThighIgnoresTheOtherLeg) {
   std::vector<Eigen::Vector3d> cloud;
   Sample(Circle(80, 100), 4, All, 0, &cloud);
@@ -195,7 +232,7 @@ TEST(SectionGirth, TrunkLeavesOutTheArmsRestingOnIt) {
   std::vector<bool> arms(cloud.size(), false);
   std::fill(arms.begin() + static_cast<std::ptrdiff_t>(trunk_points), arms.end(), true);
   const SectionGirth g = MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), kPlane, kUp,
-                                             sides, {arms, {}, true});
+                                             sides, {arms, {}, true, {}});
   EXPECT_NEAR(g.girth_mm, alone_mm, 0.5);    // mm
   EXPECT_LT(g.part.col(0).maxCoeff(), 156);  // mm: the trunk's side plus the noise
 }
@@ -216,7 +253,7 @@ TEST(SectionGirth, TrunkCutByHolesUnderTheArmsIsOnePart) {
   const Eigen::MatrixX3d sides = (Eigen::MatrixX3d(2, 3) << 150, 0, 100, -150, 0, 100).finished();
   const double expected = 2 * (kPi - 2 * hole) * r + 2 * 2 * r * std::sin(hole);  // arcs + chords
   const SectionGirth g = MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), kPlane, kUp,
-                                             sides, {arms, {}, true});
+                                             sides, {arms, {}, true, {}});
   // Each arc's end lies up to one spacing (4 mm of arc) inside its hole's
   // edge, which shortens the tape by up to 4 * 4 mm * (1 - cos 40 deg) = 3.7 mm.
   EXPECT_LT(g.girth_mm, expected + 0.5);  // mm
