@@ -20,6 +20,8 @@ void CloudGeodesicsOptions::Check() const {
     throw InputError("geodesics: max_hole_snap_distance_mm must be >= 0");
   if (!(polish_spacing_mm >= 0) || !std::isfinite(polish_spacing_mm))
     throw InputError("geodesics: polish_spacing_mm must be >= 0");
+  if (polish_splits < 0 || polish_splits > 8)
+    throw InputError("geodesics: polish_splits must be 0-8");
 }
 
 namespace {
@@ -33,6 +35,64 @@ std::string Format(const Eigen::Vector3d& x) {
   char text[96];
   std::snprintf(text, sizeof text, "(%.1f, %.1f, %.1f)", x.x(), x.y(), x.z());
   return text;
+}
+
+// The first sample i of `samples` (#S x 3, mm) whose step from sample i - 1
+// leaves the surface (CloudGrid::StepOnSurface), or -1.
+Eigen::Index FirstStepOff(const CloudGrid& grid, const Eigen::MatrixX3d& samples,
+                          const std::vector<int>& hints) {
+  for (Eigen::Index i = 1; i < samples.rows(); ++i)
+    if (!grid.StepOnSurface(hints[static_cast<size_t>(i - 1)], samples.row(i - 1).transpose(),
+                            hints[static_cast<size_t>(i)], samples.row(i).transpose()))
+      return i;
+  return -1;
+}
+
+// A path piece, its samples' grid hints and tangent planes.
+struct Piece {
+  Eigen::MatrixX3d samples;
+  std::vector<int> hints;
+  std::vector<TangentPlane> planes;
+  Piece Rows(Eigen::Index first, Eigen::Index last) const {
+    const auto n = static_cast<std::ptrdiff_t>(last - first + 1);
+    const auto at = static_cast<std::ptrdiff_t>(first);
+    return {samples.middleRows(first, last - first + 1),
+            std::vector<int>(hints.begin() + at, hints.begin() + at + n),
+            std::vector<TangentPlane>(planes.begin() + at, planes.begin() + at + n)};
+  }
+};
+
+// Flows `piece` (its end samples held) into a locally shortest path on the
+// surface. A flow that cuts across a gap - a step between two sheets, or off
+// a hole's rim into the air, as round an armpit or between touching thighs
+// - is undone; the piece is then split at the sample of that step, held where
+// the propagation put it (on links of the grid), and each half is flowed on
+// its own, at most `depth` splits deep. A part still off the surface keeps
+// its propagated samples. Returns false when some part kept them.
+bool PolishPiece(const CurvatureFlowOptions& flow, const CloudGrid& grid, int depth, Piece* piece,
+                 CurvatureFlowReport* report) {
+  Piece flowed = *piece;
+  const CurvatureFlowReport r =
+      FlowPolyline(flow, grid, &flowed.samples, &flowed.hints, &flowed.planes);
+  report->iterations = std::max(report->iterations, r.iterations);
+  const Eigen::Index off = FirstStepOff(grid, flowed.samples, flowed.hints);
+  if (off < 0) {
+    report->converged = report->converged && r.converged;
+    *piece = std::move(flowed);
+    return true;
+  }
+  const Eigen::Index rows = piece->samples.rows();
+  if (depth == 0 || rows < 5) return false;
+  const Eigen::Index split = std::clamp<Eigen::Index>(off, 2, rows - 3);
+  Piece head = piece->Rows(0, split), tail = piece->Rows(split, rows - 1);
+  const bool ok_head = PolishPiece(flow, grid, depth - 1, &head, report);
+  const bool ok_tail = PolishPiece(flow, grid, depth - 1, &tail, report);
+  piece->samples << head.samples, tail.samples.bottomRows(rows - split - 1);
+  std::copy(head.hints.begin(), head.hints.end(), piece->hints.begin());
+  std::copy(head.planes.begin(), head.planes.end(), piece->planes.begin());
+  std::copy(tail.hints.begin() + 1, tail.hints.end(), piece->hints.begin() + split + 1);
+  std::copy(tail.planes.begin() + 1, tail.planes.end(), piece->planes.begin() + split + 1);
+  return ok_head && ok_tail;
 }
 
 }  // namespace
@@ -316,26 +376,19 @@ CloudGeodesicPath CloudGeodesics::Between(const Eigen::Vector3d& from, const Eig
   if (options_.polish && (a - b).norm() > 0) {
     const double spacing =
         options_.polish_spacing_mm > 0 ? options_.polish_spacing_mm : 0.5 * grid_.cell_size_mm();
-    std::vector<int> flowed_hints = hints;
-    Eigen::MatrixX3d flowed = ResamplePolyline(path, spacing, &flowed_hints);
-    std::vector<TangentPlane> flowed_planes;
-    FillMissingPlanes(grid_, flowed, &flowed_hints, &flowed_planes);
-    const CurvatureFlowReport report =
-        FlowPolyline(options_.polish_flow, grid_, &flowed, &flowed_hints, &flowed_planes);
+    Piece piece;
+    piece.hints = hints;
+    piece.samples = ResamplePolyline(path, spacing, &piece.hints);
+    FillMissingPlanes(grid_, piece.samples, &piece.hints, &piece.planes);
+    CurvatureFlowReport report;
+    report.converged = true;
+    result.polish_rejected =
+        !PolishPiece(options_.polish_flow, grid_, options_.polish_splits, &piece, &report);
     result.polish_converged = report.converged;
     result.polish_iterations = report.iterations;
-    // As in the propagation: a flow that cut between unlinked nodes (through
-    // a gap) is undone and the propagated path, which follows links, is kept.
-    bool on_surface = true;
-    for (size_t i = 1; i < flowed_hints.size() && on_surface; ++i)
-      on_surface = grid_.StepOnSurface(flowed_hints[i - 1], flowed.row(i - 1).transpose(),
-                                       flowed_hints[i], flowed.row(i).transpose());
-    result.polish_rejected = !on_surface;
-    if (on_surface) {
-      path = std::move(flowed);
-      hints = std::move(flowed_hints);
-      planes = std::move(flowed_planes);
-    }
+    path = std::move(piece.samples);
+    hints = std::move(piece.hints);
+    planes = std::move(piece.planes);
   }
   FillMissingPlanes(grid_, path, &hints, &planes);
   result.length_mm = SurfaceCurveLength(path, planes);

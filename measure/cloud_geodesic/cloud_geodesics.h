@@ -14,7 +14,9 @@
 //   Between(from, to): point to point. Propagates only until the target's
 //     node is settled, then flows the whole inherited path (resampled to
 //     polish_spacing_mm) with its true end points: the windowed propagation
-//     finds the route, the final flow makes it locally shortest.
+//     finds the route, the final flow makes it locally shortest. Where that
+//     flow cuts across a gap, the path is split there and its parts flowed
+//     apart (polish_splits).
 //
 // Coordinates are in the scan's frame and units (mm). A query point that is
 // not finite, or farther than max_snap_distance_mm from every scan point,
@@ -53,6 +55,11 @@ struct CloudGeodesicsOptions {
   // Sample spacing of that final flow; 0 (default) = half a cell.
   double polish_spacing_mm = 0;
   CurvatureFlowOptions polish_flow = {100, 0.001, 1.0};  // 100 iterations, 0.001 mm
+  // A final flow that cuts across a gap (round an armpit, between touching
+  // thighs) is undone and the path split at that step, the sample held where
+  // the propagation put it, each part flowed on its own: at most this many
+  // splits deep (default 3, up to 8 parts; 0 = the whole path or nothing).
+  int polish_splits = 3;
   // Distance fields: the scan points' distances (point_field.h); default on.
   PointFieldOptions point_field;
   void Check() const;  // InputError when out of range
@@ -71,7 +78,7 @@ struct CloudGeodesicPath {
   double propagated_length_mm = 0;  // the wavefront's estimate, before the final flow
   bool polish_converged = true;
   int polish_iterations = 0;
-  bool polish_rejected = false;    // the final flow cut across a gap and was undone
+  bool polish_rejected = false;    // some part of the final flow cut across a gap and was undone
   std::int64_t nodes_settled = 0;  // size of the propagation behind the answer
   // How far each query point was moved onto the scanned surface (mm), and
   // whether it lay in an unscanned region (farther than max_snap_distance_mm):

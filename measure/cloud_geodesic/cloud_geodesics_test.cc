@@ -134,6 +134,9 @@ TEST(CloudGeodesics, BadQueriesAreInputErrors) {
   CloudGeodesicsOptions bad;
   bad.grid.neighbours = 2;
   EXPECT_THROW(CloudGeodesics(bad, cloud), InputError);
+  CloudGeodesicsOptions splits;
+  splits.polish_splits = -1;
+  EXPECT_THROW(CloudGeodesics(splits, cloud), InputError);
 }
 
 // A query point inside a large unscanned patch (as the crotch on a body
