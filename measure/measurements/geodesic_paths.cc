@@ -153,9 +153,30 @@ GeodesicPath Bridged(CloudGeodesics& geodesics, const Eigen::MatrixX3d& normals,
   return out;
 }
 
-// Whether a solved path is a detour (IsDetour) between its datum points.
+// Whether the part of a path (#K x 3, mm) up to first_bridge_mm (straight)
+// from either end runs more than detour_ratio times that reach: round a hole
+// at the datum point (the crotch between the thighs), too short a part of
+// a long path (the inside leg) to make all of it a detour.
+bool EndDetours(const GeodesicPathOptions& o, const Eigen::MatrixX3d& points) {
+  const Eigen::Index n = points.rows();
+  for (const bool from_end : {false, true}) {
+    const auto at = [&](Eigen::Index k) { return points.row(from_end ? n - 1 - k : k); };
+    double along = 0;
+    for (Eigen::Index k = 1; k < n; ++k) {
+      along += (at(k) - at(k - 1)).norm();
+      const double reach = (at(k) - at(0)).norm();
+      if (reach < o.first_bridge_mm) continue;
+      if (along > o.detour_ratio * reach) return true;
+      break;
+    }
+  }
+  return false;
+}
+
+// Whether a solved path is a detour between its datum points: all of it
+// (IsDetour), or round either end (EndDetours).
 bool Detour(const GeodesicPathOptions& o, const GeodesicPath& path, const Vec& a, const Vec& b) {
-  return path.error.empty() && IsDetour(o, path.length_mm, a, b);
+  return path.error.empty() && (IsDetour(o, path.length_mm, a, b) || EndDetours(o, path.points));
 }
 
 }  // namespace

@@ -9,7 +9,8 @@
 // lies in a hole (farther than tolerance_mm from every scan point, up to
 // max_bridge_mm), at one (its nearest scan point lies on the rim of an
 // unscanned region), or where the path over the scan is a detour (longer
-// than detour_ratio times the chord, as round a buttock when the skin under
+// than detour_ratio times the chord, as a whole or in its part within
+// first_bridge_mm of either end, as round a buttock when the skin under
 // a crotch was not seen but the thighs round the datum point were), the
 // path may end with a bridge from a scan point p to the datum point, chosen
 // to minimise geodesic(other end, p) + bridge, p within first_bridge_mm of

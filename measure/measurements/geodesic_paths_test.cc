@@ -18,18 +18,18 @@ struct Plates {
 };
 
 // z = 0 for x <= -50 mm, z = 45 mm for x >= 50 mm, and between them the ramp
-// z = 45 (x + 50) / 100 where |y| >= 150 mm; x and y in [-200, 200] mm,
-// points 3 mm apart.
-Plates SteppedPlates() {
+// z = 45 (x + 50) / 100 where |y| >= slot_mm (the slot's half length); x in
+// [-200, x_max_mm], y in [-200, 200] mm, points 3 mm apart.
+Plates SteppedPlates(double slot_mm = 150, double x_max_mm = 200) {
   std::vector<Eigen::Vector3d> p, n;
   const Eigen::Vector3d ramp_normal = Eigen::Vector3d(-0.45, 0, 1).normalized();
-  for (double x = -200; x <= 200; x += 3) {
+  for (double x = -200; x <= x_max_mm; x += 3) {
     for (double y = -200; y <= 200; y += 3) {
       if (x <= -50) {
         p.emplace_back(x, y, 0), n.push_back(Eigen::Vector3d::UnitZ());
       } else if (x >= 50) {
         p.emplace_back(x, y, 45), n.push_back(Eigen::Vector3d::UnitZ());
-      } else if (std::abs(y) >= 150) {
+      } else if (std::abs(y) >= slot_mm) {
         p.emplace_back(x, y, 0.45 * (x + 50)), n.push_back(ramp_normal);
       }
     }
@@ -84,6 +84,30 @@ TEST(GeodesicPaths, WithoutEitherRuleThePathRunsRoundTheHole) {
   ASSERT_TRUE(path.error.empty()) << path.error;
   EXPECT_GT(path.length_mm, 250.0);
   EXPECT_EQ(path.bridged_mm, 0.0);
+}
+
+// A slot 120 mm long (|y| < 60) and the high plate out to x = 1000 mm: from
+// (-51, 0, 0) to (990, 0, 45) the way round the slot's end over the ramp
+// (1089.5 mm, 1.05 chords) is no detour as a whole, but near the datum
+// point it runs 60 mm sideways and up the ramp before it turns: round the
+// hole at the datum point, as the inside leg from a crotch between the
+// thighs. The path seeks a bridge into the datum point and takes it.
+TEST(GeodesicPaths, DetourRoundAnEndCrossesTheHole) {
+  const Plates plates = SteppedPlates(60, 1000);
+  CloudGeodesics geodesics(CloudGeodesicsOptions{}, plates.points);
+  LandmarkSet set;
+  set.points["low"].position_mm = Eigen::Vector3d(-51, 0, 0);
+  set.points["far"].position_mm = Eigen::Vector3d(990, 0, 45);
+  GeodesicPathOptions options;
+  options.rim_offset = 1.01;  // the rim test off, as in DetourCrossesTheHoleOnAnArc
+  GeodesicPaths paths;
+  paths.Need("low", "far");
+  paths.Solve(options, geodesics, plates.normals, set, nullptr);
+  const GeodesicPath* path = paths.Get("far", "low");
+  ASSERT_NE(path, nullptr);
+  ASSERT_TRUE(path->error.empty()) << path->error;
+  EXPECT_GT(path->bridged_mm, 50.0);
+  EXPECT_LT(path->length_mm, 1085.0);  // mm: 1081.4 with the bridge, 1089.5 round
 }
 
 }  // namespace
