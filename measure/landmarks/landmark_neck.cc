@@ -22,6 +22,16 @@ constexpr double kBackNeckBelowNarrowest = 0.015;
 // the bumps of a rounded corner.
 constexpr double kFlatTopMm = 2;
 
+// How far out past the armpit an axilla fold is sought, mm. The front fold
+// (the pectoral's edge, running onto the arm) can end a little outside the
+// armpit's apex (up to 18 mm on the oracle's bodies). The back fold lies on
+// the trunk's side of it (from 1 mm outside to 63 mm inside on both body
+// models, A- and T-posed); farther out lies the arm, whose underside a section above a
+// raised arm's armpit cuts along its length, leaving a pocket between arm
+// and back that is no fold.
+constexpr double kFrontFoldPastArmpitMm = 40;
+constexpr double kBackFoldPastArmpitMm = 5;
+
 struct Neck {
   double z = 0;  // narrowest section above the shoulders
   double y = 0;  // its centroid's y
@@ -221,7 +231,8 @@ void AxillaFolds(Context* c, int sign, const Eigen::Vector3d& acromion) {
     for (size_t i = 0; i < rows.size(); ++i) {
       const Eigen::Vector3d p = c->P(rows[i]);
       const double x = sign * p.x();
-      if (x < ax - 70 || x > ax + 40 || (front ? p.y() <= arm.armpit.y() : p.y() >= arm.armpit.y()))
+      if (x < ax - 70 || x > ax + (front ? kFrontFoldPastArmpitMm : kBackFoldPastArmpitMm) ||
+          (front ? p.y() <= arm.armpit.y() : p.y() >= arm.armpit.y()))
         continue;
       points.push_back(p);
       depths.push_back(DepthInsideHull(xy, hull, p.head<2>()));
