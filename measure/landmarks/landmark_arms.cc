@@ -25,6 +25,9 @@ constexpr double kElbowShare = 0.49;
 // (the elbow methods of the accuracy sets, docs/landmarks.md step 7).
 constexpr double kMinElbowBendDeg = 12;
 constexpr double kStyloidPastNarrowest_mm = 15;
+// Half thickness of the slab the wrist point is taken from, mm: one point
+// spacing of the cleaned cloud (4 mm voxels) either side of the station.
+constexpr double kWristSlabHalfMm = 4;
 // The shortest shoulder-to-arm's-end distance, as a share of stature, that
 // can hold a hand (shoulder to wrist is about 0.33, to the fingertips about
 // 0.44; a complete T-posed arm of a heavy body whose shoulder point sits out
@@ -256,7 +259,12 @@ void FindArm(Context* c, int sign) {
   // The ulnar styloid sits at the forearm's distal end, just past the
   // narrowest section (about 15 mm towards the hand).
   wrist_t += kStyloidPastNarrowest_mm;
-  const int wrist = BestInSlab(*c, f, wrist_t, 10, back);
+  // The back of the section at that station, across the arm: in a thick
+  // slab the tapering forearm's most backward point is at the slab's upper
+  // edge, up to a slab's half thickness short of the station.
+  Eigen::Vector3d across = back - back.dot(f.axis) * f.axis;
+  across = across.norm() > 0.3 ? across.normalized() : back;  // an arm pointing backwards
+  const int wrist = BestInSlab(*c, f, wrist_t, kWristSlabHalfMm, across);
   if (wrist >= 0) c->Put("wrist" + side, c->P(wrist), confidence, "arm_section_min_back", flags);
   // The elbow: the arm's bend, or a share of the arm when it is straight.
   const double bend_t = BendStation(*c, f, wrist_t);
