@@ -60,6 +60,17 @@ struct Piece {
             std::vector<int>(hints.begin() + at, hints.begin() + at + n),
             std::vector<TangentPlane>(planes.begin() + at, planes.begin() + at + n)};
   }
+  // `head` then `tail` without its first sample (the one they share).
+  static Piece Joined(const Piece& head, const Piece& tail) {
+    Piece out;
+    out.samples.resize(head.samples.rows() + tail.samples.rows() - 1, 3);
+    out.samples << head.samples, tail.samples.bottomRows(tail.samples.rows() - 1);
+    out.hints = head.hints;
+    out.hints.insert(out.hints.end(), tail.hints.begin() + 1, tail.hints.end());
+    out.planes = head.planes;
+    out.planes.insert(out.planes.end(), tail.planes.begin() + 1, tail.planes.end());
+    return out;
+  }
 };
 
 // Flows `piece` (its end samples held) into a locally shortest path on the
@@ -87,11 +98,7 @@ bool PolishPiece(const CurvatureFlowOptions& flow, const CloudGrid& grid, int de
   Piece head = piece->Rows(0, split), tail = piece->Rows(split, rows - 1);
   const bool ok_head = PolishPiece(flow, grid, depth - 1, &head, report);
   const bool ok_tail = PolishPiece(flow, grid, depth - 1, &tail, report);
-  piece->samples << head.samples, tail.samples.bottomRows(rows - split - 1);
-  std::copy(head.hints.begin(), head.hints.end(), piece->hints.begin());
-  std::copy(head.planes.begin(), head.planes.end(), piece->planes.begin());
-  std::copy(tail.hints.begin() + 1, tail.hints.end(), piece->hints.begin() + split + 1);
-  std::copy(tail.planes.begin() + 1, tail.planes.end(), piece->planes.begin() + split + 1);
+  *piece = Piece::Joined(head, tail);
   return ok_head && ok_tail;
 }
 

@@ -89,6 +89,11 @@ bool MakeFrame(const Context& c, const ArmInfo& arm, const Eigen::Vector3d& orig
   return true;
 }
 
+// The component of `v` across the unit `axis` (mm or unitless, as `v`).
+Eigen::Vector3d AcrossAxis(const Eigen::Vector3d& v, const Eigen::Vector3d& axis) {
+  return v - v.dot(axis) * axis;
+}
+
 // Largest distance from the centroid, across the axis, of the rows within
 // `half` of station t: the section's half-size (mm); inf when too few.
 double SectionRadius(const Context& c, const ArmFrame& f, double t, double half) {
@@ -96,8 +101,7 @@ double SectionRadius(const Context& c, const ArmFrame& f, double t, double half)
   std::vector<Eigen::Vector3d> near;
   for (size_t i = 0; i < f.rows.size(); ++i) {
     if (std::abs(f.t[i] - t) > half) continue;
-    Eigen::Vector3d p = c.P(f.rows[i]);
-    p -= p.dot(f.axis) * f.axis;
+    const Eigen::Vector3d p = AcrossAxis(c.P(f.rows[i]), f.axis);
     near.push_back(p);
     sum += p;
   }
@@ -137,7 +141,7 @@ double EndFlatness(const Context& c, const ArmFrame& f) {
     const double from_end = f.length - f.t[i];
     if (from_end < 40 || from_end >= 100) continue;
     const Eigen::Vector3d p = c.P(f.rows[i]) - f.origin;
-    across.push_back(p - p.dot(f.axis) * f.axis);
+    across.push_back(AcrossAxis(p, f.axis));
     mean += across.back();
   }
   if (across.size() < 10) return 0;
@@ -262,7 +266,7 @@ void FindArm(Context* c, int sign) {
   // The back of the section at that station, across the arm: in a thick
   // slab the tapering forearm's most backward point is at the slab's upper
   // edge, up to a slab's half thickness short of the station.
-  Eigen::Vector3d across = back - back.dot(f.axis) * f.axis;
+  Eigen::Vector3d across = AcrossAxis(back, f.axis);
   across = across.norm() > 0.3 ? across.normalized() : back;  // an arm pointing backwards
   const int wrist = BestInSlab(*c, f, wrist_t, kWristSlabHalfMm, across);
   if (wrist >= 0) c->Put("wrist" + side, c->P(wrist), confidence, "arm_section_min_back", flags);
@@ -284,7 +288,7 @@ void FindArm(Context* c, int sign) {
   const Eigen::Vector3d upper_axis = to_elbow.normalized();
   const double half = 0.5 * to_elbow.norm();
   const Eigen::Vector3d lateral = Eigen::Vector3d(sign, 0, 0);
-  const Eigen::Vector3d outward = (lateral - lateral.dot(upper_axis) * upper_axis).normalized();
+  const Eigen::Vector3d outward = AcrossAxis(lateral, upper_axis).normalized();
   std::vector<int> slab;
   for (int r : f.rows) {
     const Eigen::Vector3d d = c->P(r) - f.origin;

@@ -164,9 +164,8 @@ bool EndDetours(const GeodesicPathOptions& o, const Eigen::MatrixX3d& points) {
     double along = 0;
     for (Eigen::Index k = 1; k < n; ++k) {
       along += (at(k) - at(k - 1)).norm();
-      const double reach = (at(k) - at(0)).norm();
-      if (reach < o.first_bridge_mm) continue;
-      if (along > o.detour_ratio * reach) return true;
+      if ((at(k) - at(0)).norm() < o.first_bridge_mm) continue;
+      if (IsDetour(o, along, at(k).transpose(), at(0).transpose())) return true;
       break;
     }
   }
