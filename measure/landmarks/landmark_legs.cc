@@ -137,42 +137,111 @@ double CalfLevel(const Context& c, const std::vector<std::vector<int>>& leg, dou
   return best < at.size() ? ProfileExtreme(largest, at, girth, best) : -1;
 }
 
-// The knee's level near `estimate_z` (mm): the shin lies behind the
-// kneecap, so the leg's front profile (mean of the three most forward
-// points per slice, then of five slices) climbs fastest at the kneecap's
-// lower edge, and mid-patella lies kPatellaAboveSteepestMm above that (the
-// climb's peak refined off the slice grid, profile_extreme.h). `estimate_z`
-// when the front climbs less than kKneeMinSlope anywhere within
-// kKneeSearchMm.
-double KneeLevel(const Context& c, const std::vector<std::vector<int>>& leg, double estimate_z,
-                 bool* found) {
-  const int lo = SliceAt(c.slices, estimate_z - kKneeSearchMm) - 4,
-            hi = SliceAt(c.slices, estimate_z + kKneeSearchMm) + 4;
-  std::vector<double> at, front;
-  for (int s = std::max(0, lo); s <= std::min<int>(hi, c.slices.size() - 1); ++s) {
-    // The mean of the three most forward points: one point's noise moves
-    // the profile's slope, and the knee with it.
+// The leg's profile along y between lo and hi (mm): per slice the mean of
+// the three most forward (`front`) or most backward points (one point's
+// noise moves a slope, and any level found from it), then the mean of
+// five slices; NaN where the leg has fewer than three points.
+struct LegProfile {
+  std::vector<double> at;     // slice heights, mm
+  std::vector<double> y;      // smoothed profile, mm
+  std::vector<double> slope;  // dy/dz over +-2 slices, NaN at the ends
+};
+
+LegProfile ProfileOf(const Context& c, const std::vector<std::vector<int>>& leg, double lo,
+                     double hi, bool front) {
+  LegProfile p;
+  std::vector<double> raw;
+  for (int s = std::max(0, SliceAt(c.slices, lo)); s <= SliceAt(c.slices, hi); ++s) {
     std::vector<double> y;
-    for (int r : leg[static_cast<size_t>(s)]) y.push_back(c.points(r, 1));
+    for (int r : leg[static_cast<size_t>(s)]) y.push_back((front ? 1 : -1) * c.points(r, 1));
     const size_t n = std::min<size_t>(3, y.size());
     std::partial_sort(y.begin(), y.begin() + static_cast<long>(n), y.end(), std::greater<>());
-    at.push_back(c.slices[static_cast<size_t>(s)].z);
-    front.push_back(n < 3 ? kNaN : (y[0] + y[1] + y[2]) / 3);
+    p.at.push_back(c.slices[static_cast<size_t>(s)].z);
+    raw.push_back(n < 3 ? kNaN : (front ? 1 : -1) * (y[0] + y[1] + y[2]) / 3);
   }
-  const std::vector<double> mean = WindowMean(front, 2, 3);
-  std::vector<double> slope(at.size(), kNaN);
-  std::vector<bool> inside(at.size(), false);
-  for (size_t k = 2; k + 2 < at.size(); ++k) {
-    slope[k] = (mean[k + 2] - mean[k - 2]) / (at[k + 2] - at[k - 2]);
-    inside[k] = std::abs(at[k] - estimate_z) <= kKneeSearchMm;
-  }
+  p.y = WindowMean(raw, 2, 3);
+  p.slope.assign(p.at.size(), kNaN);
+  for (size_t k = 2; k + 2 < p.at.size(); ++k)
+    p.slope[k] = (p.y[k + 2] - p.y[k - 2]) / (p.at[k + 2] - p.at[k - 2]);
+  return p;
+}
+
+// The front cue: the shin lies behind the kneecap, so the front profile
+// climbs fastest at the kneecap's lower edge, and mid-patella lies
+// kPatellaAboveSteepestMm above that (the climb's peak refined off the
+// slice grid, profile_extreme.h), within kKneeSearchMm of `estimate_z`.
+// NaN when the front climbs less than kKneeMinSlope there.
+double FrontKnee(const LegProfile& front, double estimate_z) {
+  std::vector<bool> inside(front.at.size());
+  for (size_t k = 0; k < front.at.size(); ++k)
+    inside[k] = std::abs(front.at[k] - estimate_z) <= kKneeSearchMm;
   ProfileExtremeOptions steepest;
   steepest.minimum = false;
   steepest.half_window = 4;
-  const size_t best = BestSample(steepest, slope, inside);
-  *found = best < at.size() && slope[best] >= kKneeMinSlope;
-  if (!*found) return estimate_z;
-  return ProfileExtreme(steepest, at, slope, best) + kPatellaAboveSteepestMm;
+  const size_t best = BestSample(steepest, front.slope, inside);
+  if (best == front.at.size() || front.slope[best] < kKneeMinSlope) return kNaN;
+  return ProfileExtreme(steepest, front.at, front.slope, best) + kPatellaAboveSteepestMm;
+}
+
+// The back cue: above the calf's bulge the back of the leg recedes to the
+// hollow behind the knee and then runs flat or turns back out into the
+// thigh. The knee is where that recession has slowed to half its fastest
+// rate (within kCalfRecessionMm above the calf; the calf is the most
+// backward level between kCalfLowShare and kCalfHighShare of the crotch
+// height). NaN when the back does not recede there.
+double BackKnee(const LegProfile& back, double crotch_z) {
+  constexpr double kCalfLowShare = 0.3, kCalfHighShare = 0.55, kCalfRecessionMm = 200;
+  constexpr double kMinRecession = 0.05;  // mm of back per mm of height
+  const size_t n = back.at.size();
+  size_t calf = n;
+  for (size_t k = 0; k < n; ++k) {
+    if (back.at[k] < kCalfLowShare * crotch_z || back.at[k] > kCalfHighShare * crotch_z ||
+        !std::isfinite(back.y[k]))
+      continue;
+    if (calf == n || back.y[k] < back.y[calf]) calf = k;
+  }
+  if (calf == n) return kNaN;
+  size_t peak = n;
+  for (size_t k = calf + 1; k < n && back.at[k] < back.at[calf] + kCalfRecessionMm; ++k)
+    if (std::isfinite(back.slope[k]) && (peak == n || back.slope[k] > back.slope[peak])) peak = k;
+  if (peak == n || back.slope[peak] < kMinRecession) return kNaN;
+  for (size_t k = peak; k < n; ++k)
+    if (std::isfinite(back.slope[k]) && back.slope[k] < 0.5 * back.slope[peak]) return back.at[k];
+  return kNaN;
+}
+
+// The knee's level (mm) and how it was found. Two shape cues that fail on
+// different legs: the front cue (a steady climb from shin to a heavy thigh
+// leaves its steepest point anywhere in the window) and the back cue (a leg
+// without a calf bulge). Where they agree within two slices, their mean;
+// where they disagree, the median of the two and kKneeShare of the crotch
+// height, so that the failing one is outvoted; with one missing, its mean
+// with that proportion; with neither, the proportion (`shaped` false).
+struct KneeLevel {
+  double z_mm = kNaN;
+  const char* method = "";
+  double confidence = 0.6;
+  bool shaped = true;
+};
+
+KneeLevel FindKneeLevel(const Context& c, const std::vector<std::vector<int>>& leg) {
+  const double estimate_z = kKneeShare * c.crotch_z;
+  const LegProfile front = ProfileOf(c, leg, estimate_z - kKneeSearchMm - 4 * c.step,
+                                     estimate_z + kKneeSearchMm + 4 * c.step, true);
+  const LegProfile back = ProfileOf(c, leg, 0.25 * c.crotch_z, 0.85 * c.crotch_z, false);
+  const double f = FrontKnee(front, estimate_z), b = BackKnee(back, c.crotch_z);
+  KneeLevel k;
+  if (std::isfinite(f) && std::isfinite(b) && std::abs(f - b) <= 2 * c.step) {
+    k = {(f + b) / 2, "front_back_mean", 0.7, true};
+  } else if (std::isfinite(f) && std::isfinite(b)) {
+    k = {std::max(std::min(f, b), std::min(std::max(f, b), estimate_z)),
+         "front_back_proportion_median", 0.6, true};
+  } else if (std::isfinite(f) || std::isfinite(b)) {
+    k = {((std::isfinite(f) ? f : b) + estimate_z) / 2, "shape_proportion_mean", 0.6, true};
+  } else {
+    k = {estimate_z, "proportion_front_max", 0.6, false};
+  }
+  return k;
 }
 
 void FindLeg(Context* c, int sign) {
@@ -189,15 +258,15 @@ void FindLeg(Context* c, int sign) {
   } else {
     c->Missing("thigh" + side, "no leg section below the crotch");
   }
-  bool from_profile = false;
-  const double knee_z = KneeLevel(*c, leg, kKneeShare * c->crotch_z, &from_profile);
-  const int knee = BestNear(*c, leg, knee_z, from_profile ? 4 : 15, all, Eigen::Vector3d::UnitY());
-  if (knee >= 0 && from_profile) {
+  const KneeLevel level = FindKneeLevel(*c, leg);
+  const double knee_z = level.z_mm;
+  const int knee = BestNear(*c, leg, knee_z, level.shaped ? 4 : 15, all, Eigen::Vector3d::UnitY());
+  if (knee >= 0 && level.shaped) {
     Eigen::Vector3d p = c->P(knee);
     p.z() = knee_z;
-    c->Put("knee" + side, p, 0.7, "front_profile_steepest");
+    c->Put("knee" + side, p, level.confidence, level.method);
   } else if (knee >= 0) {
-    c->Put("knee" + side, c->P(knee), 0.6, "proportion_front_max");
+    c->Put("knee" + side, c->P(knee), level.confidence, level.method);
   } else {
     c->Missing("knee" + side, "no leg section at knee height");
   }
