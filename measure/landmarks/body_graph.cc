@@ -111,6 +111,9 @@ void BodyGraph::Link(const BodyGraphOptions& options) {
             const Eigen::Vector3d d = Site(b) - Site(a);
             const double len = d.norm();
             if (len > max_len) continue;
+            if (Site(a).x() * Site(b).x() < 0 &&
+                std::max(Site(a).z(), Site(b).z()) < options.midline_apart_below_mm)
+              continue;
             const Eigen::Vector3d& nb = normal_[static_cast<size_t>(b)];
             if (na.squaredNorm() > 0 && nb.squaredNorm() > 0) {
               if (na.dot(nb) < min_cos) continue;

@@ -38,6 +38,11 @@ struct BodyGraphOptions {
   // by more than this is a fold where two skins meet (thighs or an arm
   // against the trunk), not a surface to walk over (default 80).
   double max_crease_angle_deg = 80;
+  // Below this height (mm) no link crosses x = 0, the body's mid-sagittal
+  // plane: two legs, or feet set together, touch there but never share
+  // skin, and where they touch toe to toe the fronts of both face forward,
+  // so the normal tests above would link them (default 0: none).
+  double midline_apart_below_mm = 0;
 };
 
 class BodyGraph {

@@ -48,6 +48,27 @@ TEST(BodyGraph, TouchingCylindersStayApart) {
             without.Component(without.NodeOf(static_cast<int>(p.size()) - 1)));
 }
 
+TEST(BodyGraph, NothingCrossesTheMidlineBelowTheGivenHeight) {
+  // The fronts of two feet set together, toe against toe: one strip of skin
+  // facing forward (+y) from x = -60 to 60, 40 mm high. Nothing in the
+  // normals tells the two toes apart; below midline_apart_below_mm no link
+  // crosses x = 0.
+  std::vector<Eigen::Vector3d> p, n;
+  for (double x = -58; x <= 58; x += 4)
+    for (double z = 2; z <= 40; z += 4) p.emplace_back(x, 0, z), n.emplace_back(0, 1, 0);
+  const int right = static_cast<int>(p.size()) - 1;
+  const BodyGraph linked(BodyGraphOptions{}, Rows(p), Rows(n));
+  EXPECT_EQ(linked.Component(linked.NodeOf(0)), linked.Component(linked.NodeOf(right)));
+  BodyGraphOptions apart;
+  apart.midline_apart_below_mm = 100;
+  const BodyGraph g(apart, Rows(p), Rows(n));
+  EXPECT_NE(g.Component(g.NodeOf(0)), g.Component(g.NodeOf(right)));
+  // Above that height the strip is one piece again.
+  apart.midline_apart_below_mm = 1;
+  const BodyGraph above(apart, Rows(p), Rows(n));
+  EXPECT_EQ(above.Component(above.NodeOf(0)), above.Component(above.NodeOf(right)));
+}
+
 TEST(BodyGraph, DistancesFollowTheSurface) {
   // One cylinder of radius 80: from a point to the opposite side at the same
   // height the surface distance is half the circumference (251 mm), not the

@@ -129,7 +129,9 @@ void LabelArm(const BodyGraph& g, const std::vector<double>& d0,
 BodyStructure FindBodyStructure(const BodyStructureOptions& o, const Eigen::MatrixX3d& points,
                                 const Eigen::MatrixX3d& normals, double h) {
   BodyStructure s;
-  const BodyGraph g(o.graph, points, normals);
+  BodyGraphOptions graph = o.graph;
+  graph.midline_apart_below_mm = std::max(graph.midline_apart_below_mm, o.legs_apart_share * h);
+  const BodyGraph g(graph, points, normals);
   const std::vector<int> ring = SeedRing(g, points, h);
   if (ring.empty()) {
     s.why = "no trunk section at 60 % of stature";

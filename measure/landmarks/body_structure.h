@@ -40,6 +40,10 @@ struct BodyStructureOptions {
   // An end of the body (head, hand, foot) stands out of the distance field
   // from the trunk by at least this share of stature (default 0.1).
   double persistence = 0.1;
+  // Below this share of stature the surface graph links nothing across
+  // x = 0 (BodyGraphOptions::midline_apart_below_mm; default 0.3: below the
+  // knees, well under any crotch, where feet set together touch).
+  double legs_apart_share = 0.3;
 };
 
 struct BodyStructure {
