@@ -261,12 +261,11 @@ void FindLeg(Context* c, int sign) {
   const KneeLevel level = FindKneeLevel(*c, leg);
   const double knee_z = level.z_mm;
   const int knee = BestNear(*c, leg, knee_z, level.shaped ? 4 : 15, all, Eigen::Vector3d::UnitY());
-  if (knee >= 0 && level.shaped) {
+  if (knee >= 0) {
+    // A shape cue sets the level; the proportion alone keeps the point's own.
     Eigen::Vector3d p = c->P(knee);
-    p.z() = knee_z;
+    if (level.shaped) p.z() = knee_z;
     c->Put("knee" + side, p, level.confidence, level.method);
-  } else if (knee >= 0) {
-    c->Put("knee" + side, c->P(knee), level.confidence, level.method);
   } else {
     c->Missing("knee" + side, "no leg section at knee height");
   }
