@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "measure/landmarks/arm_notch.h"
 #include "measure/landmarks/landmark_context.h"
 #include "scanners/core/errors.h"
 
@@ -131,6 +132,58 @@ int ArmLeavesTrunk(const std::vector<double>& ext, int bottom, int top, TrunkLik
   return -1;
 }
 
+// Above the apex of a gap between arm and trunk the section still shows the
+// notch for a few slices while the armpit's dome closes (5-15 mm on the
+// oracle's MakeHuman and parametric sets, 240 armpits); an arm resting on
+// the trunk leaves it for centimetres. Climbs shorter than this (mm) keep
+// the join.
+constexpr double kRestingArmMinClimbMm = 20;
+
+// From slice `level`, where the arm's and the trunk's sections join, up
+// while the section (`rows_at(s)`: the trunk's and this arm's points) still
+// shows the arm's notch (arm_notch.h), one slice without it allowed (a thin
+// slice's noise); up to 84 % of stature. Returns the notches of slices
+// level + 1 up to the last with one (a slice without: found = false), or
+// nothing when that climb is shorter than kRestingArmMinClimbMm. An arm
+// resting on the trunk joins its section far below the armpit: the notch's
+// top is the armpit.
+template <typename RowsAt>
+std::vector<ArmNotch> ClimbArmNotch(const Context& c, int level, int sign, RowsAt rows_at) {
+  const int top = SliceAt(c.slices, 0.84 * c.crown_z);
+  std::vector<ArmNotch> climb;
+  size_t kept = 0;
+  for (int s = level + 1; s <= top && climb.size() < kept + 2; ++s) {
+    climb.push_back(FindArmNotch(ArmNotchOptions{}, c.points, rows_at(s), sign));
+    if (climb.back().found) kept = climb.size();
+  }
+  climb.resize(kept);
+  if (static_cast<double>(kept) * c.step < kRestingArmMinClimbMm) climb.clear();
+  return climb;
+}
+
+// Gives the structure's trunk points of the climbed slices (level + 1 on,
+// `climb` from ClimbArmNotch) lateral of their notch to the arm `arm_part`
+// (and `arm->rows`): an upper arm resting on the trunk above a contact the
+// surface graph crossed (a bent elbow against a heavy body) is no trunk.
+void ClaimRestingArm(Context* c, int level, int sign, const std::vector<ArmNotch>& climb,
+                     Part arm_part, ArmInfo* arm) {
+  double x = 0;  // the notch of the slice, or of the nearest one below with one
+  for (const ArmNotch& n : climb)
+    if (n.found) {
+      x = sign * n.x_mm;
+      break;
+    }
+  for (size_t i = 0; i < climb.size(); ++i) {
+    if (climb[i].found) x = sign * climb[i].x_mm;
+    const Slice& slice = c->slices[static_cast<size_t>(level + 1) + i];
+    for (int r : slice.rows) {
+      if (c->PartOf(r) != Part::kTrunk || sign * c->points(r, 0) <= x) continue;
+      c->structure.part[static_cast<size_t>(r)] = arm_part;
+      arm->rows.push_back(r);
+    }
+  }
+}
+
 void FindArmpit(Context* c, int sign) {
   ArmInfo& arm = c->arm[sign > 0 ? 0 : 1];
   const std::string name = "armpit" + Side(sign);
@@ -205,12 +258,19 @@ void FindArmpit(Context* c, int sign) {
         side_x = std::max(side_x, x);
     }
     if (!std::isfinite(side_x)) side_x = ext[static_cast<size_t>(k)];
-    const double apex = below.z + 0.5 * c->step;
-    const Eigen::Vector2d mid(sign * side_x, arm_y);
+    double apex = below.z + 0.5 * c->step;
+    Eigen::Vector2d mid(sign * side_x, arm_y);
+    // An arm resting on the trunk above the join: the notch's top.
+    const std::vector<ArmNotch> climb = ClimbArmNotch(
+        *c, k, sign, [&](int s) { return c->TrunkRows(c->slices[static_cast<size_t>(s)]); });
+    if (!climb.empty()) {
+      apex = c->slices[static_cast<size_t>(k) + climb.size()].z + 0.5 * c->step;
+      mid = Eigen::Vector2d(climb.back().x_mm, climb.back().lobe_y_mm);
+    }
     arm.t_pose = false;
     arm.armpit_z = apex;
     arm.armpit = Eigen::Vector3d(mid.x(), mid.y(), apex);
-    c->Put(name, arm.armpit, 0.85, "arm_trunk_gap_apex");
+    c->Put(name, arm.armpit, 0.85, climb.empty() ? "arm_trunk_gap_apex" : "arm_notch_top");
     TrackArmDown(*c, k, piece, sign, &arm);
     // Above the armpit the arm is part of the trunk's section: its points
     // beyond the armpit (the deltoid) belong to the arm too.
@@ -389,6 +449,23 @@ void FindArmpitFromStructure(Context* c, int sign, double spacing_q90_mm) {
       continue;
     if (piece < 0 || p.rows.size() > pieces[static_cast<size_t>(piece)].rows.size())
       piece = static_cast<int>(i);
+  }
+  // An arm resting on the trunk above the join: the notch's top.
+  const std::vector<ArmNotch> climb =
+      piece < 0 ? std::vector<ArmNotch>{} : ClimbArmNotch(*c, level, sign, [&](int s) {
+        std::vector<int> rows;
+        for (int r : c->slices[static_cast<size_t>(s)].rows)
+          if (c->PartOf(r) == Part::kTrunk || c->PartOf(r) == arm_part) rows.push_back(r);
+        return rows;
+      });
+  if (!climb.empty()) {
+    ClaimRestingArm(c, level, sign, climb, arm_part, &arm);
+    arm.centre_line.clear();
+    CentreLineFromHand(*c, side, &arm);
+    arm.armpit_z = c->slices[static_cast<size_t>(level) + climb.size()].z + 0.5 * c->step;
+    arm.armpit = Eigen::Vector3d(climb.back().x_mm, climb.back().lobe_y_mm, arm.armpit_z);
+    c->Put(name, arm.armpit, 0.85, "arm_notch_top");
+    return;
   }
   arm.armpit_z = c->slices[static_cast<size_t>(level)].z + 0.5 * c->step;
   double y = corner.y();

@@ -558,6 +558,22 @@ TEST(MakeHumanLandmarks, FeetTogetherKeepTheStructure) {
   }
 }
 
+// Arms resting on a heavy body, forearms bent forward: the arm leaves the
+// trunk's outline at the elbow, and the surface graph crosses the elbow's
+// contact with the trunk, so the structure's corner lies there too. Taken
+// there, seed 7002's armpits are 285-290 mm low, with every trunk level built
+// under them (front waist 202 mm low, under-bust 350). The armpit is where
+// the notch between the resting arm and the trunk ends, going up. Every
+// armpit of these six bodies within 50 mm (seed 7003's, 34-39 mm low in
+// this scan, keep the join's level: the sections above it show no notch).
+TEST(MakeHumanLandmarks, ArmpitAboveArmsRestingOnTheBody) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(shared / "data/bodies/makehuman");
+  ExpectHeightsWithin(&model, {7001, 7002, 7003, 7004, 7005, 7006}, "arms-5",
+                      {"armpit_right", "armpit_left"}, 50.0);
+  ExpectHeightsWithin(&model, {7002}, "arms-5", {"under_bust", "front_waist"}, 40.0);
+}
+
 // T-posed MakeHuman bodies turn the forearm forward at the elbow, and their
 // spread fingers, or a bent arm's hand cut across one axis through the whole
 // arm, can be narrower than the wrist: the narrowest section within 90 mm of
