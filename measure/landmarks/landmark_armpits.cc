@@ -450,14 +450,18 @@ void FindArmpitFromStructure(Context* c, int sign, double spacing_q90_mm) {
     if (piece < 0 || p.rows.size() > pieces[static_cast<size_t>(piece)].rows.size())
       piece = static_cast<int>(i);
   }
-  // An arm resting on the trunk above the join: the notch's top.
+  // An arm resting on the trunk above the join: the notch's top. Above a
+  // raised arm's armpit the sections cut the arm lengthwise, a lobe beside
+  // the trunk up to the arm's top: no climb there.
   const std::vector<ArmNotch> climb =
-      piece < 0 ? std::vector<ArmNotch>{} : ClimbArmNotch(*c, level, sign, [&](int s) {
-        std::vector<int> rows;
-        for (int r : c->slices[static_cast<size_t>(s)].rows)
-          if (c->PartOf(r) == Part::kTrunk || c->PartOf(r) == arm_part) rows.push_back(r);
-        return rows;
-      });
+      piece < 0 || arm.t_pose ? std::vector<ArmNotch>{}
+                              : ClimbArmNotch(*c, level, sign, [&](int s) {
+                                  std::vector<int> rows;
+                                  for (int r : c->slices[static_cast<size_t>(s)].rows)
+                                    if (c->PartOf(r) == Part::kTrunk || c->PartOf(r) == arm_part)
+                                      rows.push_back(r);
+                                  return rows;
+                                });
   if (!climb.empty()) {
     ClaimRestingArm(c, level, sign, climb, arm_part, &arm);
     arm.centre_line.clear();

@@ -574,6 +574,22 @@ TEST(MakeHumanLandmarks, ArmpitAboveArmsRestingOnTheBody) {
   ExpectHeightsWithin(&model, {7002}, "arms-5", {"under_bust", "front_waist"}, 40.0);
 }
 
+// A T-posed arm is no arm resting on the trunk: the sections above its
+// armpit cut the raised arm lengthwise and show a lobe beside the trunk
+// all the way up the arm, so the notch is not climbed there. Climbed, the
+// armpits of these full-range bodies (the completeness run's subjects 112,
+// 122 and 132) went to the top of the arm, 450-520 mm off.
+TEST(MakeHumanLandmarks, TPosedArmpitIsNotClimbed) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(shared / "data/bodies/makehuman");
+  for (std::uint64_t seed : {1113, 1133}) {  // the 60k booth (99 x 75 px per sensor)
+    const std::string what = "seed " + std::to_string(seed);
+    for (double dz : HeightErrors(ScannedFullMakeHuman(&model, seed, "arms-90", 99, 75),
+                                  {"armpit_right", "armpit_left"}, what))
+      EXPECT_LE(std::abs(dz), 60.0) << what << " (mm)";
+  }
+}
+
 // T-posed MakeHuman bodies turn the forearm forward at the elbow, and their
 // spread fingers, or a bent arm's hand cut across one axis through the whole
 // arm, can be narrower than the wrist: the narrowest section within 90 mm of
