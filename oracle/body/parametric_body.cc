@@ -404,6 +404,24 @@ std::string GirthLandmark(const std::string& measurement, const std::string& sid
   return limb.count(measurement) ? limb.at(measurement) + "_" + side : "";
 }
 
+// The joint centres (ParametricBodyDetails::joints): the spine from the
+// torso sections, the limbs' from the build, the left side mirrored.
+std::map<std::string, Eigen::Vector3d> Skeleton(const Build& b) {
+  const BodyLayout& L = *b.layout;
+  std::map<std::string, Eigen::Vector3d> joints = b.joints;
+  for (const auto& [name, z] : {std::pair{"pelvis", L.z_hip}, std::pair{"spine-4", L.z_waist},
+                                std::pair{"spine-3", L.z_under_bust},
+                                std::pair{"spine-2", L.z_bust}, std::pair{"spine-1", L.z_armpit},
+                                std::pair{"neck", L.z_back_neck}, std::pair{"head", L.z_chin}}) {
+    const Section s = InterpolateSection(L.torso, z);
+    joints[name] = Eigen::Vector3d(s.cu, s.cv, z);
+  }
+  for (const auto& [name, p] : b.joints)
+    if (name.rfind("r-", 0) == 0)
+      joints["l-" + name.substr(2)] = Eigen::Vector3d(-p.x(), p.y(), p.z());
+  return joints;
+}
+
 }  // namespace
 
 Body GenerateParametricBody(const ParametricBodyOptions& options, ParametricBodyDetails* details) {
@@ -485,6 +503,7 @@ Body GenerateParametricBody(const ParametricBodyOptions& options, ParametricBody
     body.parameters[key] = g.girth_mm;
   }
   if (details) {
+    details->joints = Skeleton(b);
     details->girths = std::move(all);
     details->part = std::move(part);
   }

@@ -132,6 +132,16 @@ enum class BodyPart : std::uint8_t { kTorso, kArmRight, kArmLeft, kLegRight, kLe
 struct ParametricBodyDetails {
   std::vector<AnalyticGirth> girths;  // every girth level built in, both sides for limbs
   std::vector<BodyPart> part;  // #V: the part each vertex belongs to (torso: with neck and head)
+  // The skeleton's joint centres (body frame, mm) under MakeHuman's joint
+  // names, so MakeHuman's landmark rules (landmark_analysis.h) run on this
+  // body: "pelvis", "spine-4" .. "spine-1", "neck", "head" are the torso
+  // sections' centres at the hip, waist, under-bust, bust, armpit, back neck
+  // and chin levels; "r-shoulder" the armscye's centre; "r-elbow", "r-hand"
+  // the arm's centre path at its elbow and wrist girth levels;
+  // "r-upper-leg" the leg's centre 3 % of stature above the crotch; "r-knee",
+  // "r-ankle" the leg sections' centres at the knee and ankle levels; "l-*"
+  // their mirror images.
+  std::map<std::string, Eigen::Vector3d> joints;
 };
 
 // Builds the body. Body::parameters holds every option used (after seeding),

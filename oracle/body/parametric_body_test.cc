@@ -247,6 +247,56 @@ TEST_F(DefaultBody, PartsAreLabelledSymmetrically) {
 // every arm vertex more than 100 mm from the armscye (the torso vertices the
 // arm is stitched to) is at least 20 mm from every torso and leg vertex, and
 // the mesh stays a closed sphere without self-intersections.
+// Whether p is inside the closed mesh: the parity of the crossings of a ray
+// from p (direction skewed so that it misses edges and vertices).
+bool Inside(const TriangleMesh& mesh, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d d = Eigen::Vector3d(0.31, 0.17, 0.93).normalized();
+  int crossings = 0;
+  for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f) {
+    const Eigen::Vector3d a = mesh.vertices.row(mesh.faces(f, 0)).transpose(),
+                          b = mesh.vertices.row(mesh.faces(f, 1)).transpose(),
+                          c = mesh.vertices.row(mesh.faces(f, 2)).transpose();
+    const Eigen::Vector3d e1 = b - a, e2 = c - a, h = d.cross(e2);
+    const double det = e1.dot(h);
+    if (std::abs(det) < 1e-12) continue;
+    const Eigen::Vector3d s = p - a, q = s.cross(e1);
+    const double u = s.dot(h) / det, v = d.dot(q) / det, t = e2.dot(q) / det;
+    if (u >= 0 && v >= 0 && u + v <= 1 && t > 0) ++crossings;
+  }
+  return crossings % 2 == 1;
+}
+
+// The skeleton MakeHuman's landmark rules read: every joint inside the
+// body, in its own part (the nearest vertex's), the limbs' in anatomical
+// order and the left side the mirror of the right.
+TEST_F(DefaultBody, JointsLieInsideTheirParts) {
+  const auto& j = details_->joints;
+  const std::map<std::string, BodyPart> part = {
+      {"pelvis", BodyPart::kTorso},     {"spine-1", BodyPart::kTorso},
+      {"neck", BodyPart::kTorso},       {"head", BodyPart::kTorso},
+      {"r-elbow", BodyPart::kArmRight}, {"r-hand", BodyPart::kArmRight},
+      {"r-knee", BodyPart::kLegRight},  {"r-ankle", BodyPart::kLegRight},
+      {"l-elbow", BodyPart::kArmLeft},  {"l-knee", BodyPart::kLegLeft}};
+  for (const char* name : {"pelvis", "spine-4", "spine-3", "spine-2", "spine-1", "neck", "head",
+                           "r-shoulder", "r-elbow", "r-hand", "r-upper-leg", "r-knee", "r-ankle",
+                           "l-shoulder", "l-elbow", "l-hand", "l-upper-leg", "l-knee", "l-ankle"}) {
+    ASSERT_TRUE(j.count(name)) << name;
+    EXPECT_TRUE(Inside(body_->mesh, j.at(name))) << name;
+    if (!part.count(name)) continue;
+    Eigen::Index v = 0;
+    (body_->mesh.vertices.rowwise() - j.at(name).transpose()).rowwise().squaredNorm().minCoeff(&v);
+    EXPECT_EQ(details_->part[static_cast<size_t>(v)], part.at(name)) << name;
+  }
+  EXPECT_GT(j.at("r-shoulder").z(), j.at("r-elbow").z());
+  EXPECT_GT(j.at("r-elbow").z(), j.at("r-hand").z());
+  EXPECT_GT(j.at("r-upper-leg").z(), j.at("r-knee").z());
+  EXPECT_GT(j.at("r-knee").z(), j.at("r-ankle").z());
+  EXPECT_GT(j.at("neck").z(), j.at("spine-1").z());
+  EXPECT_FALSE(Inside(body_->mesh, Eigen::Vector3d(0, 0, -10)));  // below the soles
+  const Eigen::Vector3d flip(-1, 1, 1);
+  EXPECT_LT((j.at("l-hand") - j.at("r-hand").cwiseProduct(flip)).norm(), 1e-9);
+}
+
 TEST(ParametricBody, ArmsClearOfTheTorsoFromAToTPose) {
   for (double abduction : {15.0, 22.0, 35.0, 60.0, 90.0}) {
     SCOPED_TRACE("abduction " + std::to_string(abduction));

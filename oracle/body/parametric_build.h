@@ -41,6 +41,7 @@ struct Build {
   std::map<std::string, int> landmarks;   // right-side and centre landmarks -> vertex
   std::map<std::string, double> derived;  // construction values reported in Body::parameters
   std::vector<std::pair<int, BodyPart>> part_starts;  // first vertex of each part, ascending
+  std::map<std::string, Eigen::Vector3d> joints;  // right side and centre (ParametricBodyDetails)
 
   // Column index modulo n.
   int Col(int j) const { return ((j % n) + n) % n; }

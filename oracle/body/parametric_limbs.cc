@@ -104,6 +104,13 @@ void BuildLegs(Build* b) {
   const auto vertex = [&](double z, int m) {
     return right[IndexOf(levels, z)][static_cast<size_t>(m)];
   };
+  const auto centre_at = [&](double z) {
+    const Section c = InterpolateSection(L.leg, std::min(z, L.z_thigh));
+    return Eigen::Vector3d(c.cu, c.cv, z);
+  };
+  b->joints["r-upper-leg"] = centre_at(L.z_crotch + 0.03 * L.options.stature_mm);
+  b->joints["r-knee"] = centre_at(L.z_knee);
+  b->joints["r-ankle"] = centre_at(L.z_ankle);
   b->landmarks["thigh_right"] = vertex(L.z_thigh, 3 * q);
   b->landmarks["knee_right"] = vertex(L.z_knee, q);
   b->landmarks["calf_right"] = vertex(L.z_calf, 3 * q);
@@ -320,6 +327,9 @@ void BuildArms(Build* b) {
     AddLimbGirth(b, key.girth, ring_at(key.at), key.section, plan.path.Centre(key.at), n,
                  plan.path.Centre(key.at), r * plan.path.U(key.at), r * Eigen::Vector3d::UnitY());
   }
+  b->joints["r-shoulder"] = plan.path.start;
+  b->joints["r-elbow"] = plan.path.Centre(plan.keys[2].at);
+  b->joints["r-hand"] = plan.path.Centre(plan.keys[4].at);
   b->landmarks["upper_arm_right"] = ring_at(plan.keys[1].at)[0];
   b->landmarks["elbow_right"] = ring_at(plan.keys[2].at)[static_cast<size_t>(3 * q)];
   b->landmarks["wrist_right"] = ring_at(plan.keys[4].at)[static_cast<size_t>(3 * q)];
