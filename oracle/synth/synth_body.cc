@@ -7,6 +7,7 @@
 #include "oracle/makehuman/makehuman_body.h"
 #include "oracle/makehuman/makehuman_model.h"
 #include "oracle/makehuman/makehuman_pose.h"
+#include "oracle/synth/rule_landmarks.h"
 #include "oracle/truth/defined_landmarks.h"
 #include "scanners/core/errors.h"
 
@@ -76,6 +77,7 @@ Body SynthBodyGenerator::Generate(const SynthBodyOptions& options) {
     if (!options.posture.empty()) ApplyParametricPosture(options.posture, &p);
     p.Check();
     Body body = GenerateParametricBody(p);
+    PlaceRuleLandmarks(RuleLandmarkOptions{}, p, &body);
     PlaceDefinedLandmarks(DefinedLandmarkOptions{}, {}, &body);
     return body;
   }

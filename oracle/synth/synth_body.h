@@ -6,7 +6,8 @@
 //     seed 0 is the average body, seed N > 0 draws sex, stature, build and
 //     proportions (SeededOptions, from `population`); `params` then override single sizes by
 //     field name (ParametricBodyOptions::Set, e.g. "waist_girth_mm",
-//     "arm_angle_deg").
+//     "arm_angle_deg"). Its shoulder, axilla and thigh points by MakeHuman's
+//     rules (rule_landmarks.h), its levels by definition (defined_landmarks.h).
 //   model "makehuman": MakeHuman CC0 data from `makehuman_dir` (default
 //     $BESPOKE_SHARED_DIR/data/bodies/makehuman, else ../shared/...);
 //     `params` by MakeHumanBodyOptions::Set name ("gender", "weight",
