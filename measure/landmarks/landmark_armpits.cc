@@ -320,20 +320,26 @@ void CentreLineFromHand(const Context& c, int side, ArmInfo* arm) {
       arm->centre_line.push_back(sum[static_cast<size_t>(b)] / count[static_cast<size_t>(b)]);
 }
 
-// The 2-D pieces of slice `s` made of the trunk's and this arm's points
-// (other limbs left out, linked within `link_mm`), the central ones (holding
-// trunk points within 60 mm of the middle; a hole can split the trunk's
-// section) merged into the first. `central` gets 0 when there is one, -1
-// when none.
-std::vector<Piece> TrunkAndArmPieces(const Context& c, const Slice& s, Part arm_part,
-                                     double link_mm, int* central) {
+// The rows of slice `s` that are the trunk's or the arm `arm_part`'s (other
+// limbs left out).
+std::vector<int> TrunkAndArmRows(const Context& c, const Slice& s, Part arm_part) {
   std::vector<int> rows;
   for (int r : s.rows) {
     const Part p = c.PartOf(r);
     if (p == Part::kTrunk || p == arm_part) rows.push_back(r);
   }
+  return rows;
+}
+
+// The 2-D pieces of slice `s` made of the trunk's and this arm's points
+// (TrunkAndArmRows, linked within `link_mm`), the central ones (holding
+// trunk points within 60 mm of the middle; a hole can split the trunk's
+// section) merged into the first. `central` gets 0 when there is one, -1
+// when none.
+std::vector<Piece> TrunkAndArmPieces(const Context& c, const Slice& s, Part arm_part,
+                                     double link_mm, int* central) {
   std::vector<Piece> out(1);
-  for (Piece& piece : SplitPieces(c.points, rows, link_mm)) {
+  for (Piece& piece : SplitPieces(c.points, TrunkAndArmRows(c, s, arm_part), link_mm)) {
     bool centre = false;
     for (int r : piece.rows) centre |= std::abs(c.points(r, 0)) < 60 && c.PartOf(r) == Part::kTrunk;
     if (centre)
@@ -454,14 +460,11 @@ void FindArmpitFromStructure(Context* c, int sign, double spacing_q90_mm) {
   // raised arm's armpit the sections cut the arm lengthwise, a lobe beside
   // the trunk up to the arm's top: no climb there.
   const std::vector<ArmNotch> climb =
-      piece < 0 || arm.t_pose ? std::vector<ArmNotch>{}
-                              : ClimbArmNotch(*c, level, sign, [&](int s) {
-                                  std::vector<int> rows;
-                                  for (int r : c->slices[static_cast<size_t>(s)].rows)
-                                    if (c->PartOf(r) == Part::kTrunk || c->PartOf(r) == arm_part)
-                                      rows.push_back(r);
-                                  return rows;
-                                });
+      piece < 0 || arm.t_pose
+          ? std::vector<ArmNotch>{}
+          : ClimbArmNotch(*c, level, sign, [&](int s) {
+              return TrunkAndArmRows(*c, c->slices[static_cast<size_t>(s)], arm_part);
+            });
   if (!climb.empty()) {
     ClaimRestingArm(c, level, sign, climb, arm_part, &arm);
     arm.centre_line.clear();
