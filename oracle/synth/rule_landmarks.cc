@@ -1,6 +1,7 @@
 #include "oracle/synth/rule_landmarks.h"
 
 #include <string>
+#include <vector>
 
 #include "oracle/makehuman/landmark_analysis.h"
 #include "scanners/core/errors.h"
@@ -11,6 +12,11 @@ void RuleLandmarkOptions::Check() const {
   if (!(rest_abduction_deg >= 15 && rest_abduction_deg <= 40))
     throw InputError("rule landmarks: rest_abduction_deg must be 15-40, not " +
                      std::to_string(rest_abduction_deg));
+  if (!(max_shoulder_abduction_deg >= rest_abduction_deg && max_shoulder_abduction_deg <= 90))
+    throw InputError(
+        "rule landmarks: max_shoulder_abduction_deg must be rest_abduction_deg-90, "
+        "not " +
+        std::to_string(max_shoulder_abduction_deg));
 }
 
 void PlaceRuleLandmarks(const RuleLandmarkOptions& options,
@@ -21,9 +27,12 @@ void PlaceRuleLandmarks(const RuleLandmarkOptions& options,
   ParametricBodyDetails details;
   const Body rest = GenerateParametricBody(rest_options, &details);
   const auto analysed = AnalyseMakeHumanLandmarks(rest.mesh, details.joints);
-  for (const char* name : {"shoulder", "axilla_front", "axilla_back", "thigh"}) {
+  std::vector<std::string> names = {"axilla_front", "axilla_back", "thigh"};
+  if (body_options.arm_abduction_deg <= options.max_shoulder_abduction_deg)
+    names.push_back("shoulder");
+  for (const std::string& name : names) {
     for (const char* side : {"_right", "_left"}) {
-      const std::string key = std::string(name) + side;
+      const std::string key = name + side;
       const auto it = analysed.find(key);
       if (it == analysed.end()) throw InternalError("rule landmarks: no " + key);
       body->landmarks[key] = ClosestSurfacePoint(body->mesh, it->second.position);

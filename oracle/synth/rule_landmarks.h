@@ -28,8 +28,8 @@
 // arms of the A-pose they are written for, so they run on the same body
 // built with `rest_abduction_deg`; each point is carried to the body as its
 // closest surface point. The torso and legs are the same at every arm
-// abduction; a point on the arm's root goes to the nearest skin of the
-// raised arm.
+// abduction; a fold on the arm's root goes to the nearest skin of the
+// raised arm; the shoulder point only up to `max_shoulder_abduction_deg`.
 #ifndef BESPOKE_ORACLE_SYNTH_RULE_LANDMARKS_H_
 #define BESPOKE_ORACLE_SYNTH_RULE_LANDMARKS_H_
 
@@ -43,6 +43,14 @@ struct RuleLandmarkOptions {
   // the oracle's default posture); 15-40 (above 45 the acromion rule's
   // diagonal runs along the arm).
   double rest_abduction_deg = 30;
+  // Largest arm abduction of the body whose shoulder point the rule places,
+  // deg; default 45. The acromion rule reads the cap of a hanging arm; a
+  // raised arm's root is rebuilt around a straight arm with no such cap,
+  // where the A-pose's point carried to the nearest skin lay 37 mm (median,
+  // 10 T-posed bodies) from the detector's point on the shoulder's top, the
+  // construction's (the armscye's top corner, where the raised arm's top
+  // leaves the torso) 22-27 mm. Above it the construction's point stays.
+  double max_shoulder_abduction_deg = 45;
   // Throws InputError when out of range.
   void Check() const;
 };

@@ -92,23 +92,28 @@ TEST(RuleLandmarks, AxillaFoldsAreAboveTheArmpitInFrontAndBehind) {
 }
 
 // The rules run on the A-pose; the torso does not move with the arms, so a
-// raised arm keeps the torso's points, and the shoulder stays over the
-// shoulder rather than out on the arm.
+// raised arm keeps the torso's points. A T-posed body keeps the
+// construction's shoulder point; one at 45 deg takes the rule's.
 TEST(RuleLandmarks, RaisedArmsKeepTheTorsosPoints) {
-  const Placed a = Place(3, 30), t = Place(3, 90);
+  const Placed a = Place(3, 30), t = Place(3, 90), mid = Place(3, 45);
   for (const char* name : {"thigh_right", "thigh_left"})
     EXPECT_LT((At(a.rule, name) - At(t.rule, name)).norm(), 1.0) << name;
+  EXPECT_LT((At(t.rule, "shoulder_right") - At(t.construction, "shoulder_right")).norm(), 1e-9);
+  EXPECT_LT((At(mid.rule, "shoulder_right") - At(a.rule, "shoulder_right")).norm(), 15);
+  EXPECT_GT((At(mid.rule, "shoulder_right") - At(mid.construction, "shoulder_right")).norm(), 30);
   // The folds lie where the arm's root meets the chest and the back, whose
   // arm-side faces turn with the arm: each stays within a ring spacing
   // (15 mm) of the A-pose's.
   for (const char* name : {"axilla_front_right", "axilla_back_right"})
     EXPECT_LT((At(a.rule, name) - At(t.rule, name)).norm(), 15) << name;
-  EXPECT_LT(std::abs(At(a.rule, "shoulder_right").x() - At(t.rule, "shoulder_right").x()), 40);
 }
 
 TEST(RuleLandmarks, BadRestPoseIsAnInputError) {
   RuleLandmarkOptions o;
   o.rest_abduction_deg = 60;
+  EXPECT_THROW(o.Check(), InputError);
+  o = RuleLandmarkOptions{};
+  o.max_shoulder_abduction_deg = 20;  // below the rest pose
   EXPECT_THROW(o.Check(), InputError);
 }
 
