@@ -94,8 +94,9 @@ testing::ScannedBody ScannedParametric(std::uint64_t seed, double arm_deg, Body*
   ParametricBodyOptions options;
   options.seed = seed;
   options.arm_abduction_deg = arm_deg;
-  Body body = GenerateParametricBody(options);
-  PlaceRuleLandmarks(RuleLandmarkOptions{}, options, &body);  // as oracle/synth does
+  ParametricBodyDetails details;
+  Body body = GenerateParametricBody(options, &details);
+  PlaceRuleLandmarks(RuleLandmarkOptions{}, options, details, &body);  // as oracle/synth does
   PlaceDefinedLandmarks(DefinedLandmarkOptions{}, {}, &body);
   testing::ScannedBodyOptions scan_options;
   scan_options.scan_seed = seed;

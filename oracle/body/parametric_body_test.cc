@@ -243,10 +243,6 @@ TEST_F(DefaultBody, PartsAreLabelledSymmetrically) {
   EXPECT_GT(count[BodyPart::kTorso], count[BodyPart::kLegRight]);
 }
 
-// Arms stay clear of the torso and legs from a tight A-pose to a T-pose:
-// every arm vertex more than 100 mm from the armscye (the torso vertices the
-// arm is stitched to) is at least 20 mm from every torso and leg vertex, and
-// the mesh stays a closed sphere without self-intersections.
 // Whether p is inside the closed mesh: the parity of the crossings of a ray
 // from p (direction skewed so that it misses edges and vertices).
 bool Inside(const TriangleMesh& mesh, const Eigen::Vector3d& p) {
@@ -297,6 +293,10 @@ TEST_F(DefaultBody, JointsLieInsideTheirParts) {
   EXPECT_LT((j.at("l-hand") - j.at("r-hand").cwiseProduct(flip)).norm(), 1e-9);
 }
 
+// Arms stay clear of the torso and legs from a tight A-pose to a T-pose:
+// every arm vertex more than 100 mm from the armscye (the torso vertices the
+// arm is stitched to) is at least 20 mm from every torso and leg vertex, and
+// the mesh stays a closed sphere without self-intersections.
 TEST(ParametricBody, ArmsClearOfTheTorsoFromAToTPose) {
   for (double abduction : {15.0, 22.0, 35.0, 60.0, 90.0}) {
     SCOPED_TRACE("abduction " + std::to_string(abduction));

@@ -1,5 +1,6 @@
 #include "oracle/synth/rule_landmarks.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -20,13 +21,20 @@ void RuleLandmarkOptions::Check() const {
 }
 
 void PlaceRuleLandmarks(const RuleLandmarkOptions& options,
-                        const ParametricBodyOptions& body_options, Body* body) {
+                        const ParametricBodyOptions& body_options,
+                        const ParametricBodyDetails& details, Body* body) {
   options.Check();
-  ParametricBodyOptions rest_options = body_options;
-  rest_options.arm_abduction_deg = options.rest_abduction_deg;
-  ParametricBodyDetails details;
-  const Body rest = GenerateParametricBody(rest_options, &details);
-  const auto analysed = AnalyseMakeHumanLandmarks(rest.mesh, details.joints);
+  // A body built at the rest pose is its own rest body.
+  std::map<std::string, AnalysedLandmark> analysed;
+  if (body_options.arm_abduction_deg == options.rest_abduction_deg) {
+    analysed = AnalyseMakeHumanLandmarks(body->mesh, details.joints);
+  } else {
+    ParametricBodyOptions rest_options = body_options;
+    rest_options.arm_abduction_deg = options.rest_abduction_deg;
+    ParametricBodyDetails rest_details;
+    const Body rest = GenerateParametricBody(rest_options, &rest_details);
+    analysed = AnalyseMakeHumanLandmarks(rest.mesh, rest_details.joints);
+  }
   std::vector<std::string> names = {"axilla_front", "axilla_back", "thigh"};
   if (body_options.arm_abduction_deg <= options.max_shoulder_abduction_deg)
     names.push_back("shoulder");

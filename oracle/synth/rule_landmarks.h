@@ -57,9 +57,11 @@ struct RuleLandmarkOptions {
 
 // Moves the points listed above on `body`, the parametric body that
 // GenerateParametricBody built from `body_options` (the same options, seeded
-// or not). InputError when a rule finds nothing.
+// or not) with `details`; a body already at `rest_abduction_deg` serves as
+// its own rest body (no second build). InputError when a rule finds nothing.
 void PlaceRuleLandmarks(const RuleLandmarkOptions& options,
-                        const ParametricBodyOptions& body_options, Body* body);
+                        const ParametricBodyOptions& body_options,
+                        const ParametricBodyDetails& details, Body* body);
 
 }  // namespace bespoke
 

@@ -28,7 +28,7 @@ Placed Place(std::uint64_t seed, double arm_deg) {
   Placed p;
   p.construction = GenerateParametricBody(options, &p.details);
   p.rule = p.construction;
-  PlaceRuleLandmarks(RuleLandmarkOptions{}, options, &p.rule);
+  PlaceRuleLandmarks(RuleLandmarkOptions{}, options, p.details, &p.rule);
   return p;
 }
 

@@ -76,8 +76,9 @@ Body SynthBodyGenerator::Generate(const SynthBodyOptions& options) {
     }
     if (!options.posture.empty()) ApplyParametricPosture(options.posture, &p);
     p.Check();
-    Body body = GenerateParametricBody(p);
-    PlaceRuleLandmarks(RuleLandmarkOptions{}, p, &body);
+    ParametricBodyDetails details;
+    Body body = GenerateParametricBody(p, &details);
+    PlaceRuleLandmarks(RuleLandmarkOptions{}, p, details, &body);
     PlaceDefinedLandmarks(DefinedLandmarkOptions{}, {}, &body);
     return body;
   }
