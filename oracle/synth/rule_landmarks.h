@@ -13,13 +13,12 @@
 // back concavities of the section a quarter of the way up from the armpit
 // to the shoulder point) and thigh (the leg's lateral extreme 20 mm below
 // the crotch). Other points keep the construction's: the side neck agrees
-// with its rule (within 8 mm on five seeds); the rules of the back and front
-// neck, elbow, wrist, knee and malleoli read the joints' heights, which this
-// body has only from its construction's own levels; the armpit (the armscye's
-// bottom on the torso's side) lies 14-30 mm from the rule's saddle vertex
-// (five seeds), which sits on the arm's root, 12-25 mm further out and
-// 5-13 mm higher, where the chest girth's "trunk free of the arms" would
-// take in part of the arm's root; the bust point is the bust ring's
+// with its rule; the rules of the back and front neck, elbow, wrist, knee and
+// malleoli read the joints' heights, which this body has only from its
+// construction's own levels; the armpit (the armscye's bottom on the
+// torso's side) stays because the rule's saddle vertex sits on the arm's
+// root, further out and higher, where the chest girth's "trunk free of the
+// arms" would take in part of the arm; the bust point is the bust ring's
 // (the rule's "most forward point below the armpit" is the belly on bodies
 // whose belly reaches further forward than the bust). The trunk levels, calf
 // and upper arm are placed by defined_landmarks.h afterwards, from these.
@@ -46,10 +45,9 @@ struct RuleLandmarkOptions {
   // Largest arm abduction of the body whose shoulder point the rule places,
   // deg; default 45. The acromion rule reads the cap of a hanging arm; a
   // raised arm's root is rebuilt around a straight arm with no such cap,
-  // where the A-pose's point carried to the nearest skin lay 37 mm (median,
-  // 10 T-posed bodies) from the detector's point on the shoulder's top, the
-  // construction's (the armscye's top corner, where the raised arm's top
-  // leaves the torso) 22-27 mm. Above it the construction's point stays.
+  // and the A-pose's point carried to its nearest skin lies off the
+  // shoulder's top. Above it the construction's point (the armscye's top
+  // corner, where the raised arm's top leaves the torso) stays.
   double max_shoulder_abduction_deg = 45;
   // Throws InputError when out of range.
   void Check() const;
