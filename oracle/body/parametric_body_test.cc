@@ -444,5 +444,26 @@ TEST(ParametricBody, FullPopulationSpansTheRangeAndBuilds) {
   EXPECT_THROW(SeededOptions(o, "no-such"), InputError);
 }
 
+// A woman's chest girth, at the armpits above the breasts, lies between her
+// under-bust and her bust girths (MakeHuman's women: chest below bust on all
+// but the flattest); a chest above the bust leaves no breast to find.
+TEST(ParametricBody, WomenHaveTheChestBetweenUnderBustAndBust) {
+  ParametricBodyOptions o;
+  int women = 0;
+  for (const char* population : {"default", "full"}) {
+    for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+      o.seed = seed;
+      const ParametricBodyOptions f = SeededOptions(o, population);
+      if (f.chest_girth_mm == f.bust_girth_mm) continue;  // a man: chest = bust
+      ++women;
+      const double rise_mm = f.bust_girth_mm - f.under_bust_girth_mm;
+      EXPECT_GT(f.chest_girth_mm, f.under_bust_girth_mm) << population << " seed " << seed;
+      EXPECT_LT(f.chest_girth_mm, f.bust_girth_mm - 0.02 * rise_mm)
+          << population << " seed " << seed;
+    }
+  }
+  EXPECT_GT(women, 120);
+}
+
 }  // namespace
 }  // namespace bespoke

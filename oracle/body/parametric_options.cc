@@ -183,6 +183,20 @@ constexpr GirthSpread kDefaultSpread{0.06, 0.04, 0.03, 0.03, 0.02, 1.19, 0.04, 0
 constexpr GirthSpread kFullSpread{0.12, 0.08, 0.05, 0.05, 0.03, 1.2,  0.08, 0.02,
                                   0.08, 0.05, 0.05, 0.05, 0.06, 0.05, true};
 
+// A woman's chest girth, at the armpits above the breasts, lies between her
+// under-bust and bust girths; as its share of the way up, the draw keeps
+// shares up to kChestShareKnee and brings larger ones (a chest up to or past
+// the bust, which leaves no breast below it) smoothly under
+// kChestShareCeiling (MakeHuman's women: 0.37-0.98 where the chest exceeds
+// the under-bust).
+constexpr double kChestShareKnee = 0.85, kChestShareCeiling = 0.95;
+
+double ChestShare(double drawn) {
+  if (drawn <= kChestShareKnee) return drawn;
+  const double room = kChestShareCeiling - kChestShareKnee;
+  return kChestShareKnee + room * (1 - std::exp(-(drawn - kChestShareKnee) / room));
+}
+
 // Scales the girths of `o` (a sex's average body) by the build: trunk girths
 // share it, the belly and hips vary on their own too. `jitter(sd)` draws a
 // factor 1 + sd * (clipped normal); the draw order is part of the seed's body.
@@ -194,6 +208,11 @@ void DrawGirths(const GirthSpread& sd, bool man, double build, double girth_scal
   o->chest_girth_mm = o->under_bust_girth_mm * (man ? 1.087 : 1.154) * jitter(sd.chest);
   o->bust_girth_mm =
       man ? o->chest_girth_mm : o->under_bust_girth_mm * (sd.bust_ratio * jitter(sd.bust));
+  const double rise_mm = o->bust_girth_mm - o->under_bust_girth_mm;
+  if (!man && rise_mm > 0) {
+    const double share = (o->chest_girth_mm - o->under_bust_girth_mm) / rise_mm;
+    o->chest_girth_mm = o->under_bust_girth_mm + ChestShare(share) * rise_mm;
+  }
   o->waist_girth_mm *= girth_scale * belly * (build > 1 ? build : 1.0);
   o->hip_girth_mm *= girth_scale * hips;
   const double middle = 0.5 * (o->waist_girth_mm + o->hip_girth_mm);
