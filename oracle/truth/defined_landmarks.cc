@@ -89,6 +89,18 @@ double SectionGirth(const std::vector<SectionLoop>& section) {
   return LoopHullPerimeter(MergedLoops(section, all), kUp);
 }
 
+// The fold under the breast, the same rule as the detector's
+// (measure/landmarks/landmark_trunk.cc): the front profile's bend (second
+// difference over +-kFoldHalfSpanMm) searched kFoldTop-kFoldBottom of
+// stature under the bust point; going down, its first local peak that is
+// positive and reaches half the band's sharpest bend (a flat chest's
+// pectoral edge is a weak fold, a belly's top lower down can bend more);
+// a band whose sharpest bend is under kMinFoldBendMm (a slope change of
+// 0.2, 11 deg: a flat chest) has no fold, and the under-bust lies
+// kNoFoldDrop of stature under the bust point.
+constexpr double kFoldHalfSpanMm = 10, kFoldTop = 0.01, kFoldBottom = 0.08;
+constexpr double kMinFoldBendMm = 2, kNoFoldDrop = 0.04;
+
 // The z in [lo, hi] maximising score(z): a scan in `step` steps, then one
 // refinement to step / 8 around the best.
 double ArgMax(double lo, double hi, double step, const std::function<double(double)>& score) {
@@ -103,6 +115,23 @@ double ArgMax(double lo, double hi, double step, const std::function<double(doub
   for (double z = std::max(lo, centre - step); z <= std::min(hi, centre + step); z += step / 8)
     visit(z);
   return best;
+}
+
+// Going down from hi, the first local maximum of `bend` in [lo, hi] (sampled
+// in `step` steps, one step beyond each end for its neighbours) that is at
+// least half the band's largest; refined to step / 8 around it. NaN when the
+// band's largest is under min_peak.
+double FirstCorner(double lo, double hi, double step, double min_peak,
+                   const std::function<double(double)>& bend) {
+  std::vector<double> at, value;
+  for (double z = lo - step; z <= hi + step; z += step) at.push_back(z), value.push_back(bend(z));
+  double sharpest = 0;
+  for (std::size_t k = 1; k + 1 < at.size(); ++k) sharpest = std::max(sharpest, value[k]);
+  for (std::size_t k = at.size() - 2; k >= 1 && sharpest >= min_peak; --k) {
+    if (value[k] >= 0.5 * sharpest && value[k] >= value[k - 1] && value[k] >= value[k + 1])
+      return ArgMax(std::max(lo, at[k] - step), std::min(hi, at[k] + step), step / 8, bend);
+  }
+  return std::numeric_limits<double>::quiet_NaN();
 }
 
 // The calf's level in [lo, hi]: like ArgMax, but only among the levels
@@ -178,9 +207,9 @@ DefinedLevels PlaceDefinedLandmarks(const DefinedLandmarkOptions& options,
   const TriangleMesh& mesh = body->mesh;
   const double step = options.step_mm;
   DefinedLevels levels;
-  // Under-bust: the sharpest bend of the front profile under the bust
-  // points, the section's front taken over every loop a tape passes (a heavy
-  // breast's loop included), so a hanging breast gives its underside.
+  // Under-bust: the fold under the bust points (FirstCorner), the section's
+  // front taken over every loop a tape passes (a heavy breast's loop
+  // included), so a hanging breast gives its underside.
   const Eigen::Vector3d bust_r = At(*body, "bust_right"), bust_l = At(*body, "bust_left");
   const double bust_z = 0.5 * (bust_r.z() + bust_l.z());
   const auto depth = [&](double z) {
@@ -191,10 +220,11 @@ DefinedLevels PlaceDefinedLandmarks(const DefinedLandmarkOptions& options,
     return 0.5 * (FrontAt(section, std::clamp(bust_r.x(), lo, hi)).y() +
                   FrontAt(section, std::clamp(bust_l.x(), lo, hi)).y());
   };
-  const double h = 2 * step;
-  levels.under_bust_mm = ArgMax(bust_z - 160, bust_z - 20, step, [&](double z) {
-    return depth(z + h) + depth(z - h) - 2 * depth(z);  // convex corner of the profile
-  });
+  const double stature = mesh.vertices.col(2).maxCoeff(), h = kFoldHalfSpanMm;
+  levels.under_bust_mm =
+      FirstCorner(bust_z - kFoldBottom * stature, bust_z - kFoldTop * stature, step, kMinFoldBendMm,
+                  [&](double z) { return depth(z + h) + depth(z - h) - 2 * depth(z); });
+  if (!std::isfinite(levels.under_bust_mm)) levels.under_bust_mm = bust_z - kNoFoldDrop * stature;
   // A hanging breast: the bend lies within `h` of its underside and its tip
   // can still be in the section; the tape goes just below it.
   for (int k = 0; k < 120 && TrunkSection(mesh, levels.under_bust_mm).size() > 1; ++k)

@@ -9,10 +9,14 @@
 // level is judged by the section's convex hull perimeter (the tape). Levels
 // are searched in step_mm steps, then refined to step_mm / 8 around the best.
 //
-//   under_bust: the inframammary fold: in the sagittal plane of the bust
-//     points, the level in the 20-160 mm below them where the front profile
-//     bends most sharply (largest second difference of its depth); the
-//     point on x = 0 at that level. A hanging breast's underside is that
+//   under_bust: the inframammary fold: in the sagittal planes of the bust
+//     points, 1-8 % of stature below them, going down, the first corner of
+//     the front profile (a local maximum of the second difference of its
+//     depth over +-10 mm, at least half the band's largest: a belly's top
+//     lower down can bend more); a band whose largest is under 2 mm (a flat
+//     chest) has no fold and the level is 4 % of stature below them (the
+//     detector's rule); the point on x = 0 at that level. A
+//     hanging breast's underside is that
 //     bend; where the breast is a loop of its own there, the level moves
 //     down (0.5 mm steps, at most 60 mm) until the section is free of it:
 //     the tape goes just below the breasts.
