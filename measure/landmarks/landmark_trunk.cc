@@ -17,9 +17,8 @@ namespace {
 // profile over +-10 mm, mm): a slope change of 0.2 (11 deg), a visible
 // corner; a chest whose sharpest bend is smaller is flat (no fold). The
 // oracle's truth uses the same rule (oracle/truth/defined_landmarks.cc). On
-// a scan the bend is noisy (SD 1.9 mm over five scans of the average
-// parametric woman, 1 mm range noise), so a flat chest can still show a
-// fold here: docs/landmarks.md, known limits.
+// a scan the bend is noisy, so a flat chest can still show a fold here:
+// docs/landmarks.md, known limits.
 constexpr double kMinFoldBendMm = 2;
 
 // The lowest slice (above 30 % of stature) with one piece spanning x = 0
