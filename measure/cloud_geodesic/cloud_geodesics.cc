@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
+#include <utility>
 
 #include "scanners/core/errors.h"
 
@@ -106,11 +108,23 @@ bool PolishPiece(const CurvatureFlowOptions& flow, const CloudGrid& grid, int de
 
 CloudGeodesics::CloudGeodesics(const CloudGeodesicsOptions& options, const Eigen::MatrixX3d& points,
                                Progress* progress)
-    : options_(Checked(options)), grid_(options.grid, points, progress) {}
+    : options_(Checked(options)),
+      shared_grid_(std::make_shared<const CloudGrid>(options.grid, points, progress)),
+      grid_(*shared_grid_) {}
 
 CloudGeodesics::CloudGeodesics(const CloudGeodesicsOptions& options, const Eigen::MatrixX3d& points,
                                const Eigen::MatrixX3d& normals, Progress* progress)
-    : options_(Checked(options)), grid_(options.grid, points, normals, progress) {}
+    : options_(Checked(options)),
+      shared_grid_(std::make_shared<const CloudGrid>(options.grid, points, normals, progress)),
+      grid_(*shared_grid_) {}
+
+CloudGeodesics::CloudGeodesics(const CloudGeodesicsOptions& options,
+                               std::shared_ptr<const CloudGrid> grid)
+    : options_(Checked(options)), shared_grid_(std::move(grid)), grid_(*shared_grid_) {}
+
+std::unique_ptr<CloudGeodesics> CloudGeodesics::Fork() const {
+  return std::unique_ptr<CloudGeodesics>(new CloudGeodesics(options_, shared_grid_));
+}
 
 CloudGeodesics::~CloudGeodesics() = default;
 
@@ -194,9 +208,17 @@ std::pair<Eigen::Vector3d, int> CloudGeodesics::Snap(const Eigen::Vector3d& x,
   return {point, node};
 }
 
+PropagationPool CloudGeodesics::TakeCachedPool() {
+  if (!cached_) return {};
+  PropagationPool pool = cached_->TakePool();
+  cached_.reset();
+  return pool;
+}
+
 Propagation& CloudGeodesics::PropagationFrom(const Eigen::Vector3d& source, int node) {
   if (!cached_ || cached_->source_node() != node || cached_->source() != source)
-    cached_ = std::make_unique<Propagation>(options_.propagation, grid_, source, node);
+    cached_ =
+        std::make_unique<Propagation>(options_.propagation, grid_, source, node, TakeCachedPool());
   return *cached_;
 }
 
@@ -219,7 +241,7 @@ Propagation& CloudGeodesics::HolePropagationFrom(const Eigen::Vector3d& source, 
                                                  int node) {
   if (!cached_ || cached_->source_node() != node || cached_->source() != source)
     cached_ = std::make_unique<Propagation>(options_.propagation, grid_, source,
-                                            RimNodes(source, distance, node));
+                                            RimNodes(source, distance, node), TakeCachedPool());
   return *cached_;
 }
 

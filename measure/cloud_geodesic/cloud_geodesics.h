@@ -103,6 +103,11 @@ class CloudGeodesics {
                  const Eigen::MatrixX3d& normals, Progress* progress = nullptr);
   ~CloudGeodesics();
 
+  // Another solver on this one's grid (shared, read-only: its queries are
+  // thread-safe) with a cache of its own, for another thread; the grid is
+  // not built again.
+  std::unique_ptr<CloudGeodesics> Fork() const;
+
   const CloudGrid& grid() const { return grid_; }
   const CloudGeodesicsOptions& options() const { return options_; }
 
@@ -137,6 +142,8 @@ class CloudGeodesics {
                                        bool* unscanned = nullptr) const;
 
  private:
+  // The cached propagation's storage for the next one (the cache is emptied).
+  PropagationPool TakeCachedPool();
   Propagation& PropagationFrom(const Eigen::Vector3d& source, int node);
   Propagation& HolePropagationFrom(const Eigen::Vector3d& source, double distance, int node);
   std::vector<int> RimNodes(const Eigen::Vector3d& x, double distance, int node) const;
@@ -146,8 +153,11 @@ class CloudGeodesics {
   bool InUnscannedRegion(const Eigen::Vector3d& x, double distance, int node) const;
   void SweepPoints(const Eigen::Vector3d& point, const std::vector<int>& rim_nodes);
 
+  CloudGeodesics(const CloudGeodesicsOptions& options, std::shared_ptr<const CloudGrid> grid);
+
   CloudGeodesicsOptions options_;
-  CloudGrid grid_;
+  std::shared_ptr<const CloudGrid> shared_grid_;  // shared with forks
+  const CloudGrid& grid_;
   std::unique_ptr<Propagation> cached_;
   std::optional<Eigen::Vector3d> field_source_;  // source of the last DistancesFrom
   Eigen::VectorXd field_distance_;               // and its per-point distances, mm

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
+#include <thread>
+#include <utility>
 
 #include "scanners/core/errors.h"
 #include "tests/support/sampled_surfaces.h"
@@ -172,6 +175,36 @@ TEST(CloudGeodesics, PointsInAnUnscannedHoleAreReachedAcrossIt) {
   never.max_hole_snap_distance_mm = 0;
   CloudGeodesics strict(never, cloud);
   EXPECT_THROW(strict.Between(centre, far), InputError);
+}
+
+// A fork shares the grid and answers on another thread exactly as the
+// original, and a propagation that reuses the storage of the one before it
+// (a new source on the same object) exactly as a fresh object.
+TEST(CloudGeodesics, ForksAndReusedStorageGiveTheSamePaths) {
+  const double r = 80;
+  const Eigen::MatrixX3d cloud = testing::SampleSphere({2.0, 0.3, 4}, r);
+  const Eigen::Vector3d a = OnSphere(r, 0.0, 0.1), b = OnSphere(r, 1.9, -0.4);
+  const Eigen::Vector3d c = OnSphere(r, -0.8, 0.9), d = OnSphere(r, 2.6, 0.2);
+  CloudGeodesics original({}, cloud);
+  const CloudGeodesicPath ab = original.Between(a, b);
+  const CloudGeodesicPath cd = original.Between(c, d);  // reuses ab's storage
+  const std::unique_ptr<CloudGeodesics> fork = original.Fork();
+  EXPECT_EQ(&fork->grid(), &original.grid());
+  CloudGeodesicPath fork_cd, fork_ab;
+  std::thread worker([&] {
+    fork_cd = fork->Between(c, d);
+    fork_ab = fork->Between(a, b);
+  });
+  const CloudGeodesicPath again_ab = original.Between(a, b);  // meanwhile, on this thread
+  worker.join();
+  const CloudGeodesicPath fresh_cd = CloudGeodesics({}, cloud).Between(c, d);
+  EXPECT_GT(ab.length_mm, 100);  // mm: about 150 on the sphere
+  using Pair = std::pair<const CloudGeodesicPath*, const CloudGeodesicPath*>;
+  for (const Pair& p :
+       {Pair{&ab, &fork_ab}, Pair{&ab, &again_ab}, Pair{&cd, &fork_cd}, Pair{&cd, &fresh_cd}}) {
+    EXPECT_EQ(p.first->length_mm, p.second->length_mm);
+    EXPECT_TRUE(p.first->points == p.second->points);
+  }
 }
 
 // Relative errors of a distance field from `source` on a cloud sampled from

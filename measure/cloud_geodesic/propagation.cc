@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "measure/mesh_geodesic/window_chain.h"
 #include "scanners/core/constants.h"
@@ -14,11 +15,12 @@ namespace bespoke {
 namespace {}  // namespace
 
 Propagation::Propagation(const PropagationOptions& options, const CloudGrid& grid,
-                         const Eigen::Vector3d& source, int source_node)
+                         const Eigen::Vector3d& source, int source_node, PropagationPool recycled)
     : options_(options),
       grid_(grid),
       source_(source),
       source_node_(source_node),
+      pool_(std::move(recycled)),
       wavefront_(grid.num_nodes(), options.band_spacings * grid.cell_size_mm()) {
   Init();
   // The source node's path: the source itself, then its site.
@@ -58,14 +60,19 @@ void Propagation::Init() {
   count_.assign(static_cast<size_t>(n), 0);
   offset_.assign(static_cast<size_t>(n), 0);
   tangent_.assign(static_cast<size_t>(n), Eigen::Vector3d::Zero());
+  pool_.points.clear();
+  pool_.hints.clear();
+  pool_.planes.clear();
 }
 
 Propagation::Propagation(const PropagationOptions& options, const CloudGrid& grid,
-                         const Eigen::Vector3d& source, const std::vector<int>& seeds)
+                         const Eigen::Vector3d& source, const std::vector<int>& seeds,
+                         PropagationPool recycled)
     : options_(options),
       grid_(grid),
       source_(source),
       source_node_(seeds.empty() ? -1 : seeds.front()),
+      pool_(std::move(recycled)),
       wavefront_(grid.num_nodes(), options.band_spacings * grid.cell_size_mm()) {
   if (seeds.empty()) throw InputError("propagation: no seed nodes round the source");
   Init();
@@ -97,12 +104,12 @@ Propagation::Propagation(const PropagationOptions& options, const CloudGrid& gri
 
 void Propagation::Store(int node, const Eigen::MatrixX3d& window, const std::vector<int>& hints,
                         const std::vector<TangentPlane>& planes) {
-  offset_[node] = static_cast<std::int64_t>(pool_.size());
+  offset_[node] = static_cast<std::int64_t>(pool_.points.size());
   count_[node] = static_cast<int>(window.rows());
   for (Eigen::Index i = 0; i < window.rows(); ++i) {
-    pool_.push_back(window.row(i).transpose());
-    pool_hints_.push_back(hints[static_cast<size_t>(i)]);
-    pool_planes_.push_back(planes[static_cast<size_t>(i)]);
+    pool_.points.push_back(window.row(i).transpose());
+    pool_.hints.push_back(hints[static_cast<size_t>(i)]);
+    pool_.planes.push_back(planes[static_cast<size_t>(i)]);
   }
 }
 
@@ -118,9 +125,9 @@ void Propagation::Settle(int node, int parent) {
   std::vector<TangentPlane> planes(static_cast<size_t>(k + 1));
   for (int i = 0; i < k; ++i) {
     const size_t at = static_cast<size_t>(offset_[parent] + i);
-    path.row(i) = pool_[at].transpose();
-    hints[i] = pool_hints_[at];
-    planes[i] = pool_planes_[at];
+    path.row(i) = pool_.points[at].transpose();
+    hints[i] = pool_.hints[at];
+    planes[i] = pool_.planes[at];
   }
   path.row(k) = grid_.site(node).transpose();
   hints[k] = node;
@@ -185,7 +192,7 @@ Eigen::MatrixX3d Propagation::Path(int node, std::vector<int>* hints) const {
       chain,
       [&](int u, int i) {
         const size_t at = static_cast<size_t>(offset_[static_cast<size_t>(u)] + i);
-        return std::pair<const Eigen::Vector3d&, int>(pool_[at], pool_hints_[at]);
+        return std::pair<const Eigen::Vector3d&, int>(pool_.points[at], pool_.hints[at]);
       },
       hints);
 }
@@ -203,9 +210,9 @@ double Propagation::DistanceNear(int node, const Eigen::Vector3d& x) const {
 
 std::int64_t Propagation::memory_bytes() const {
   const auto n = static_cast<std::int64_t>(distance_.size());
-  return n * (8 * 2 + 4 * 4 + 8 + 24) + static_cast<std::int64_t>(pool_.capacity()) * 24 +
-         static_cast<std::int64_t>(pool_hints_.capacity()) * 4 +
-         static_cast<std::int64_t>(pool_planes_.capacity()) *
+  return n * (8 * 2 + 4 * 4 + 8 + 24) + static_cast<std::int64_t>(pool_.points.capacity()) * 24 +
+         static_cast<std::int64_t>(pool_.hints.capacity()) * 4 +
+         static_cast<std::int64_t>(pool_.planes.capacity()) *
              static_cast<std::int64_t>(sizeof(TangentPlane));
 }
 

@@ -27,6 +27,7 @@
 #define BESPOKE_MEASURE_CLOUD_GEODESIC_PROPAGATION_H_
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "measure/cloud_geodesic/cloud_grid.h"
@@ -40,12 +41,22 @@ namespace bespoke {
 using PropagationOptions = WavefrontOptions;
 using PropagationStats = WavefrontStats;
 
+// The window samples of all settled nodes. A propagation can be handed the
+// pool of one that is done with (TakePool), so a run of propagations reuses
+// its memory instead of growing and faulting in fresh pages each time.
+struct PropagationPool {
+  std::vector<Eigen::Vector3d> points;  // mm
+  std::vector<int> hints;               // grid node of each sample
+  std::vector<TangentPlane> planes;     // its last tangent plane
+};
+
 class Propagation {
  public:
   // `source`: a point on the surface (mm) inside node `source_node` of `grid`
   // (see CloudGrid::LocateNode). The grid must outlive this object.
+  // `recycled`: storage to reuse (emptied first); its contents do not matter.
   Propagation(const PropagationOptions& options, const CloudGrid& grid,
-              const Eigen::Vector3d& source, int source_node);
+              const Eigen::Vector3d& source, int source_node, PropagationPool recycled = {});
   // A source in an unscanned region (a hole of the scan, e.g. the crotch):
   // every node in `seeds` (the scanned rim around it, non-empty, the first
   // the nearest) starts with the straight chord source -> its site as its
@@ -53,7 +64,8 @@ class Propagation {
   // straight lines - and the wavefront grows from all of them at once. The
   // chords are shortest (triangle inequality), so causality still holds.
   Propagation(const PropagationOptions& options, const CloudGrid& grid,
-              const Eigen::Vector3d& source, const std::vector<int>& seeds);
+              const Eigen::Vector3d& source, const std::vector<int>& seeds,
+              PropagationPool recycled = {});
 
   // Propagates until node `target` is settled, or everything reachable when
   // `target` < 0. Cheap when already done.
@@ -78,6 +90,9 @@ class Propagation {
 
   const PropagationStats& stats() const { return stats_; }
   std::int64_t memory_bytes() const;
+  // Moves the sample storage out for a next propagation; this object can
+  // then only be destroyed.
+  PropagationPool TakePool() { return std::move(pool_); }
 
  private:
   void Init();
@@ -107,9 +122,7 @@ class Propagation {
   std::vector<int> parent_, start_, count_;  // window start index in the path, its size
   std::vector<std::int64_t> offset_;         // window position in the pool
   std::vector<Eigen::Vector3d> tangent_;
-  std::vector<Eigen::Vector3d> pool_;  // window samples of all settled nodes
-  std::vector<int> pool_hints_;
-  std::vector<TangentPlane> pool_planes_;  // their last tangent planes
+  PropagationPool pool_;
   Wavefront wavefront_;
   PropagationStats stats_;
 };

@@ -299,8 +299,8 @@ void GeodesicPaths::Solve(const GeodesicPathOptions& o, CloudGeodesics& geodesic
   }
   // Groups to workers as they come free, largest first (a group's cost, its
   // propagation and paths, is not known before; taking the next one when
-  // idle keeps both busy). Worker 0 uses `geodesics`, the others build their
-  // own grid (CloudGeodesics keeps a per-object cache and is not
+  // idle keeps both busy). Worker 0 uses `geodesics`, the others a fork of
+  // it on the same grid (CloudGeodesics keeps a per-object cache and is not
   // thread-safe). A path does not depend on the worker that solves it.
   const int workers = std::max(1, std::min<int>(o.threads, static_cast<int>(groups.size())));
   std::vector<std::size_t> order(groups.size());
@@ -315,9 +315,7 @@ void GeodesicPaths::Solve(const GeodesicPathOptions& o, CloudGeodesics& geodesic
   auto work = [&](std::size_t w) {
     try {
       std::unique_ptr<CloudGeodesics> own;
-      if (w > 0)
-        own = std::make_unique<CloudGeodesics>(geodesics.options(),
-                                               geodesics.grid().index().points());
+      if (w > 0) own = geodesics.Fork();
       CloudGeodesics& g = w > 0 ? *own : geodesics;
       // The pairs, then bridges into their sources at a hole, from the
       // other ends (grouped so each propagation serves its pairs).

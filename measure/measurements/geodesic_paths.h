@@ -45,7 +45,7 @@ struct GeodesicPathOptions {
   double rim_offset = 0.45;     // default 0.45: a rim's neighbours' mean unit direction length
   double off_surface_mm = 4;    // default 4: a bridge crossing a hole stays this far off the scan
   double detour_ratio = 1.25;   // default 1.25: a path this many chords long seeks bridges
-  int threads = 2;              // default 2: workers (each beyond the first builds its own grid)
+  int threads = 2;              // default 2: workers (sharing one grid, each its own cache)
 };
 
 struct GeodesicPath {

@@ -64,8 +64,8 @@ struct MeasureOptions {
   double narrowest_step_mm = 2;  // default 2 mm: level step of a "narrowest_up_to" girth
   int narrowest_window = 5;      // default 5: levels whose median is compared there
   double uncertain_confidence = 0.5;  // default 0.5: below it a landmark is "uncertain"
-  int geodesic_threads = 2;           // default 2: threads for the geodesic lengths (each
-                                      // beyond the first builds its own grid)
+  int geodesic_threads = 2;           // default 2: threads for the geodesic lengths (one
+                                      // grid shared, each its own propagation cache)
   // default true: from the body structure's parts (the landmarks' parts, else
   // found here) a trunk girth keeps the trunk's points, an arm's girth that
   // arm's, another girth leaves out the arms
