@@ -1,11 +1,15 @@
 #include "scanners/render/render.h"
 
+#include <cairo.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <memory>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <string>
 
 #include "scanners/core/atomic_file.h"
 #include "scanners/core/errors.h"
@@ -315,20 +319,38 @@ RgbImage SideBySide(const std::vector<RgbImage>& images, int gap_px, Rgb backgro
   return out;
 }
 
+// PNG encoding by cairo, which the charts use already: OpenCV's imgcodecs
+// would pull GDAL and its hundred libraries into every program's start-up.
 void WritePng(const RgbImage& image, const std::filesystem::path& file) {
   if (file.extension() != ".png") throw InputError(file, "the picture must be a .png file");
   if (image.width <= 0 || image.height <= 0 ||
       image.rgb.size() != static_cast<size_t>(image.width) * image.height * 3) {
     throw InternalError("WritePng: empty or inconsistent image");
   }
-  cv::Mat rgb(image.height, image.width, CV_8UC3, const_cast<std::uint8_t*>(image.rgb.data()));
-  cv::Mat bgr;
-  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
-  std::vector<uchar> buffer;
-  if (!cv::imencode(".png", bgr, buffer, {cv::IMWRITE_PNG_COMPRESSION, 9})) {
-    throw InternalError("PNG encoding failed for " + file.string());
+  std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
+      cairo_image_surface_create(CAIRO_FORMAT_RGB24, image.width, image.height),
+      &cairo_surface_destroy);
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
+    throw InternalError("WritePng: no " + std::to_string(image.width) + " x " +
+                        std::to_string(image.height) + " image surface");
+  cairo_surface_flush(surface.get());
+  unsigned char* data = cairo_image_surface_get_data(surface.get());
+  const int stride = cairo_image_surface_get_stride(surface.get());
+  for (int y = 0; y < image.height; ++y) {
+    auto* row = reinterpret_cast<std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+    const std::uint8_t* in = image.rgb.data() + static_cast<size_t>(y) * image.width * 3;
+    for (int x = 0; x < image.width; ++x, in += 3)  // RGB24: 0x00RRGGBB, native endian
+      row[x] = (std::uint32_t{in[0]} << 16) | (std::uint32_t{in[1]} << 8) | in[2];
   }
-  WriteFileAtomically(file, std::string(buffer.begin(), buffer.end()));
+  cairo_surface_mark_dirty(surface.get());
+  std::string bytes;
+  const auto append = [](void* closure, const unsigned char* chunk, unsigned int length) {
+    static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(chunk), length);
+    return CAIRO_STATUS_SUCCESS;
+  };
+  if (cairo_surface_write_to_png_stream(surface.get(), append, &bytes) != CAIRO_STATUS_SUCCESS)
+    throw InternalError("PNG encoding failed for " + file.string());
+  WriteFileAtomically(file, bytes);
 }
 
 }  // namespace bespoke

@@ -1,8 +1,11 @@
 #include "scanners/render/render.h"
 
+#include <cairo.h>
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <fstream>
+#include <string>
 
 #include "scanners/core/errors.h"
 #include "tests/support/test_support.h"
@@ -89,6 +92,34 @@ TEST(Render, WritesPngAndRejectsBadInput) {
   EXPECT_THROW(Render(RenderOptions(), RenderScene()), InputError);
   const RgbImage two = SideBySide({im, im}, 10);
   EXPECT_EQ(two.width, 2 * im.width + 10);
+}
+
+// Every pixel comes back from the file as written (read by cairo's decoder).
+TEST(Render, PngKeepsEveryPixel) {
+  testing::TempDir dir;
+  RgbImage im;
+  im.width = 5;
+  im.height = 3;
+  for (int i = 0; i < im.width * im.height; ++i)
+    for (int c = 0; c < 3; ++c)
+      im.rgb.push_back(static_cast<std::uint8_t>((i * 37 + c * 91) % 256));
+  const std::string file = (dir / "pixels.png").string();
+  WritePng(im, file);
+  cairo_surface_t* read = cairo_image_surface_create_from_png(file.c_str());
+  ASSERT_EQ(cairo_surface_status(read), CAIRO_STATUS_SUCCESS);
+  ASSERT_EQ(cairo_image_surface_get_width(read), im.width);
+  ASSERT_EQ(cairo_image_surface_get_height(read), im.height);
+  const unsigned char* data = cairo_image_surface_get_data(read);
+  const int stride = cairo_image_surface_get_stride(read);
+  for (int y = 0; y < im.height; ++y)
+    for (int x = 0; x < im.width; ++x) {
+      const std::uint32_t argb = reinterpret_cast<const std::uint32_t*>(data + y * stride)[x];
+      const std::uint8_t* rgb = &im.rgb[static_cast<size_t>(y * im.width + x) * 3];
+      EXPECT_EQ((argb >> 16) & 0xff, rgb[0]) << x << "," << y;
+      EXPECT_EQ((argb >> 8) & 0xff, rgb[1]) << x << "," << y;
+      EXPECT_EQ(argb & 0xff, rgb[2]) << x << "," << y;
+    }
+  cairo_surface_destroy(read);
 }
 
 }  // namespace
