@@ -9,6 +9,7 @@
 #include <thread>
 #include <vector>
 
+#include "measure/measurements/geodesic_plan.h"
 #include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 
@@ -274,40 +275,20 @@ void GeodesicPaths::Solve(const GeodesicPathOptions& o, CloudGeodesics& geodesic
       if (!ends_.count(name))
         ends_[name] = Classify(o, geodesics, normals, set.points.at(name).position_mm);
   ProgressBegin(progress, "geodesics", static_cast<std::int64_t>(pending_.size()));
-  // Plan: source groups, greedily (the landmark in most pending pairs
-  // first; one at or in a hole only when no other is left, since bridges are
-  // found from the other end's propagation).
-  std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>> groups;
-  while (!pending_.empty()) {
-    std::map<std::string, int> degree;
-    for (const auto& [a, b] : pending_)
-      for (const std::string& name : {a, b})
-        degree[name] += ends_.at(name).at_rim || ends_.at(name).in_hole ? 1 : 1000;
-    const std::string source =
-        std::max_element(degree.begin(), degree.end(), [](const auto& x, const auto& y) {
-          return x.second < y.second;
-        })->first;
-    groups.emplace_back(source, std::vector<std::pair<std::string, std::string>>());
-    for (auto it = pending_.begin(); it != pending_.end();) {
-      if (it->first != source && it->second != source) {
-        ++it;
-        continue;
-      }
-      groups.back().second.push_back(*it);
-      it = pending_.erase(it);
-    }
-  }
-  // Groups to workers as they come free, largest first (a group's cost, its
-  // propagation and paths, is not known before; taking the next one when
-  // idle keeps both busy). Worker 0 uses `geodesics`, the others a fork of
-  // it on the same grid (CloudGeodesics keeps a per-object cache and is not
-  // thread-safe). A path does not depend on the worker that solves it.
+  // Plan: the end each pair is solved from, grouped by source (geodesic_plan.h).
+  std::map<std::string, PlanEnd> plan_ends;
+  for (const auto& [name, end] : ends_)
+    plan_ends[name] = {set.points.at(name).position_mm, end.at_rim || end.in_hole};
+  Eigen::MatrixX3d sites(geodesics.grid().num_nodes(), 3);
+  for (int i = 0; i < geodesics.grid().num_nodes(); ++i)
+    sites.row(i) = geodesics.grid().site(i).transpose();
+  const std::vector<SourceGroup> groups = PlanSources(sites, plan_ends, pending_);
+  pending_.clear();
+  // Groups to workers as they come free, largest estimated cost first. Worker
+  // 0 uses `geodesics`, the others a fork of it on the same grid
+  // (CloudGeodesics keeps a per-object cache and is not thread-safe). A path
+  // does not depend on the worker that solves it.
   const int workers = std::max(1, std::min<int>(o.threads, static_cast<int>(groups.size())));
-  std::vector<std::size_t> order(groups.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
-    return groups[x].second.size() > groups[y].second.size();
-  });
   std::atomic<std::size_t> next{0};
   std::vector<std::map<std::pair<std::string, std::string>, GeodesicPath>> results(
       static_cast<std::size_t>(workers));
@@ -320,13 +301,13 @@ void GeodesicPaths::Solve(const GeodesicPathOptions& o, CloudGeodesics& geodesic
       // The pairs, then bridges into their sources at a hole, from the
       // other ends (grouped so each propagation serves its pairs).
       std::vector<std::pair<std::string, std::pair<std::string, std::string>>> reverse;
-      for (std::size_t i = next++; i < order.size(); i = next++) {
-        const std::size_t k = order[i];
-        for (const auto& pair : groups[k].second) {
-          results[w][pair] = SolvePair(o, g, set, groups[k].first, pair);
-          const std::string& other = pair.first == groups[k].first ? pair.second : pair.first;
-          if (!ends_.at(groups[k].first).in_hole && !ends_.at(other).in_hole &&
-              (ends_.at(groups[k].first).at_rim ||
+      for (std::size_t k = next++; k < groups.size(); k = next++) {
+        const std::string& source = groups[k].source;
+        for (const auto& pair : groups[k].pairs) {
+          results[w][pair] = SolvePair(o, g, set, source, pair);
+          const std::string& other = pair.first == source ? pair.second : pair.first;
+          if (!ends_.at(source).in_hole && !ends_.at(other).in_hole &&
+              (ends_.at(source).at_rim ||
                Detour(o, results[w][pair], set.points.at(pair.first).position_mm,
                       set.points.at(pair.second).position_mm)))
             reverse.emplace_back(other, pair);

@@ -2,9 +2,10 @@
 // lengths of Measure (internal to measure/measurements; measure.h is the
 // interface).
 //
-// Pairs are solved from a shared start where possible (the landmark in most
-// pending pairs first), on two worker threads that each take the next
-// group of pairs when free. A tape crosses the scan's
+// Each pair is solved from the end whose propagation floods the least skin,
+// sharing sources where one already reaches far enough (geodesic_plan.h),
+// on two worker threads that each take the next group of pairs when free.
+// A tape crosses the scan's
 // holes (the crotch and the armpits no sensor saw): where a datum point
 // lies in a hole (farther than tolerance_mm from every scan point, up to
 // max_bridge_mm), at one (its nearest scan point lies on the rim of an
