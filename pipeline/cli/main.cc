@@ -1,9 +1,8 @@
 // `bespoke <command> ...`: the only place that turns errors into exit codes.
 //   0 ok, 1 bad input (InputError, bad options), 2 internal error.
+#include <malloc.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
-
-#include <malloc.h>
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
