@@ -327,16 +327,35 @@ int CloudGeodesics::NearestOf(const Eigen::Vector3d& from, const std::vector<int
                               const std::vector<double>& extra_mm, double* cost_mm) {
   const auto [a, node_a] = Snap(from, "from");
   Propagation& propagation = PropagationFrom(a, node_a);
+  // A lower bound on each target's cost. A node's distance is the length of
+  // a polyline from `a` to its site, so at least the chord; the first-order
+  // distance at a point p of the node then falls short of |a - p| by at most
+  // twice p's offset from the site. Targets are tried in order of the bound,
+  // and the propagation never grows to one that cannot beat the best so far.
+  const auto n = targets.size();
+  std::vector<double> bound(n);
+  std::vector<size_t> order(n);
+  for (size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d p = grid_.index().point(targets[i]);
+    const Eigen::Vector3d& site = grid_.site(grid_.node_of_point(targets[i]));
+    bound[i] = (p - a).norm() - 2 * (p - site).norm() + extra_mm[i];
+    order[i] = i;
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t x, size_t y) { return bound[x] < bound[y]; });
   *cost_mm = std::numeric_limits<double>::infinity();
   int best = -1;
-  for (size_t i = 0; i < targets.size(); ++i) {
+  for (const size_t i : order) {
+    if (bound[i] > *cost_mm) break;
     const int node = grid_.node_of_point(targets[i]);
     if (grid_.component(node) != grid_.component(node_a)) continue;
     propagation.Run(node);
     if (!propagation.settled(node)) continue;
     const double cost =
         propagation.DistanceNear(node, grid_.index().point(targets[i])) + extra_mm[i];
-    if (cost < *cost_mm) *cost_mm = cost, best = static_cast<int>(i);
+    // Equal costs go to the first target, as in the order given.
+    if (cost < *cost_mm || (cost == *cost_mm && static_cast<int>(i) < best))
+      *cost_mm = cost, best = static_cast<int>(i);
   }
   return best;
 }

@@ -117,8 +117,9 @@ class CloudGeodesics {
   // with the least first-order geodesic distance from `from` plus its
   // `extra_mm` (#T, mm; e.g. a bridge on from it): its position in
   // `targets`, -1 when none is reachable; `cost_mm` gets that sum. The
-  // propagation goes only as far as the targets, and Between(from, its
-  // point) then reuses it.
+  // propagation goes only as far as the targets that can still win (a
+  // target's straight distance bounds its cost from below), and
+  // Between(from, its point) then reuses it.
   int NearestOf(const Eigen::Vector3d& from, const std::vector<int>& targets,
                 const std::vector<double>& extra_mm, double* cost_mm);
   // Distances from the last DistancesFrom source to other points near the

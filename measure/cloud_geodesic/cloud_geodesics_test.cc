@@ -207,6 +207,44 @@ TEST(CloudGeodesics, ForksAndReusedStorageGiveTheSamePaths) {
   }
 }
 
+// NearestOf skips the targets that cannot win but answers as trying each
+// target alone does: the least distance plus extra, the first of equals.
+// The winner here is not the target with the least straight distance plus
+// extra: a far target's arc is much longer than its chord.
+TEST(CloudGeodesics, NearestOfAgreesWithEveryTargetTriedAlone) {
+  const double r = 80;
+  const Eigen::MatrixX3d cloud = testing::SampleSphere({2.0, 0.3, 6}, r);
+  const auto nearest_row = [&](const Eigen::Vector3d& x) {
+    Eigen::Index row = 0;
+    (cloud.rowwise() - x.transpose()).rowwise().squaredNorm().minCoeff(&row);
+    return static_cast<int>(row);
+  };
+  const Eigen::Vector3d from = OnSphere(r, 0.0, 0.0);
+  // Far: chord 140 mm, arc about 170, no extra. Near: chord 20, extra 125.
+  std::vector<int> targets = {nearest_row(OnSphere(r, 2.13, 0.0)),
+                              nearest_row(OnSphere(r, 0.25, 0.0))};
+  std::vector<double> extra = {0.0, 125.0};
+  for (int k = 0; k < 40; ++k) {  // decoys all round, too dear to win
+    targets.push_back((k * 7919) % static_cast<int>(cloud.rows()));
+    extra.push_back(200.0 + k);
+  }
+  targets.push_back(targets[1]);  // a duplicate: the first of two equals wins
+  extra.push_back(extra[1]);
+  double alone_best = std::numeric_limits<double>::infinity();
+  int alone_index = -1;
+  CloudGeodesics alone({}, cloud);  // one propagation, grown target by target
+  for (size_t i = 0; i < targets.size(); ++i) {
+    double cost = 0;
+    if (alone.NearestOf(from, {targets[i]}, {extra[i]}, &cost) == 0 && cost < alone_best)
+      alone_best = cost, alone_index = static_cast<int>(i);
+  }
+  EXPECT_EQ(alone_index, 1);
+  CloudGeodesics geodesics({}, cloud);
+  double cost = 0;
+  EXPECT_EQ(geodesics.NearestOf(from, targets, extra, &cost), alone_index);
+  EXPECT_EQ(cost, alone_best);
+}
+
 // Relative errors of a distance field from `source` on a cloud sampled from
 // the sphere of radius r (mm) about the origin, over the points at least 10 mm
 // from the source (exact: the great circle to the point's projection on the
