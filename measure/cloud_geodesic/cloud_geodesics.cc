@@ -334,11 +334,12 @@ int CloudGeodesics::NearestOf(const Eigen::Vector3d& from, const std::vector<int
   // and the propagation never grows to one that cannot beat the best so far.
   const auto n = targets.size();
   std::vector<double> bound(n);
+  std::vector<int> nodes(n);
   std::vector<size_t> order(n);
   for (size_t i = 0; i < n; ++i) {
     const Eigen::Vector3d p = grid_.index().point(targets[i]);
-    const Eigen::Vector3d& site = grid_.site(grid_.node_of_point(targets[i]));
-    bound[i] = (p - a).norm() - 2 * (p - site).norm() + extra_mm[i];
+    nodes[i] = grid_.node_of_point(targets[i]);
+    bound[i] = (p - a).norm() - 2 * (p - grid_.site(nodes[i])).norm() + extra_mm[i];
     order[i] = i;
   }
   std::stable_sort(order.begin(), order.end(),
@@ -347,7 +348,7 @@ int CloudGeodesics::NearestOf(const Eigen::Vector3d& from, const std::vector<int
   int best = -1;
   for (const size_t i : order) {
     if (bound[i] > *cost_mm) break;
-    const int node = grid_.node_of_point(targets[i]);
+    const int node = nodes[i];
     if (grid_.component(node) != grid_.component(node_a)) continue;
     propagation.Run(node);
     if (!propagation.settled(node)) continue;

@@ -19,8 +19,9 @@ namespace {
 // Every stage allocates and frees arrays of megabytes to tens of megabytes
 // (clouds, indices, grids, geodesic windows). By default glibc hands such
 // blocks back to the kernel on free, and the next stage faults fresh pages in
-// again, which on a virtual machine costs more than the work (measured on a
-// 525k-point scan: docs/measuring.md). Kept in the heap they are reused.
+// again: page faults were the largest kernel cost of a measure run under
+// perf on a 2-core VM (525k-point scan, docs/measuring.md). Kept in the heap,
+// the blocks are reused.
 void KeepFreedMemory() {
   mallopt(M_MMAP_THRESHOLD, 32 << 20);  // blocks up to 32 MB (glibc's limit) from the heap
   mallopt(M_TRIM_THRESHOLD, 1 << 30);   // the heap's top is given back beyond 1 GB free
