@@ -33,12 +33,6 @@ const CloudGeodesicsOptions& Checked(const CloudGeodesicsOptions& options) {
   return options;
 }
 
-std::string Format(const Eigen::Vector3d& x) {
-  char text[96];
-  std::snprintf(text, sizeof text, "(%.1f, %.1f, %.1f)", x.x(), x.y(), x.z());
-  return text;
-}
-
 // The first sample i of `samples` (#S x 3, mm) whose step from sample i - 1
 // leaves the surface (CloudGrid::StepOnSurface), or -1.
 Eigen::Index FirstStepOff(const CloudGrid& grid, const Eigen::MatrixX3d& samples,
@@ -128,34 +122,10 @@ std::unique_ptr<CloudGeodesics> CloudGeodesics::Fork() const {
 
 CloudGeodesics::~CloudGeodesics() = default;
 
-// Whether `x` (`distance` from the nearest scan point, in node `node`) lies
-// in a hole of the scan rather than in the air off the skin or inside the
-// body: either the scan points of the node's piece around it (within
-// `distance` plus a margin) lie on all sides of it - the mean of the unit
-// directions to them is short - or it lies along the surface from the
-// nearest scanned skin (within 20 degrees of that node's tangent plane), as
-// a point in a crease no sensor saw (the crotch, an armpit) does. A point in
-// the air or inside the body lies along the normal and sees the scan on one
-// side (mean length 0.8-1 off a plane at the radius used; 0.6 is the cut).
-bool CloudGeodesics::InUnscannedRegion(const Eigen::Vector3d& x, double distance, int node) const {
-  const TangentPlane plane = grid_.surface(node).PlaneAt(grid_.site(node));
-  const Eigen::Vector3d away = x - plane.point;
-  if (away.norm() > 0 && std::abs(plane.normal.dot(away)) <= 0.35 * away.norm())
-    return true;  // 20 deg
-  const int component = grid_.component(node);
-  const double radius = distance + std::max(2 * grid_.cell_size_mm(), 0.5 * distance);
-  std::vector<int> near;
-  std::vector<double> d2;
-  grid_.index().Knn(x, 1024, &near, &d2);
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  int count = 0;
-  for (size_t i = 0; i < near.size(); ++i) {
-    if (d2[i] > radius * radius || d2[i] <= 0) continue;
-    if (grid_.component(grid_.node_of_point(near[i])) != component) continue;
-    sum += (grid_.index().points().row(near[i]).transpose() - x) / std::sqrt(d2[i]);
-    ++count;
-  }
-  return count >= 20 && sum.norm() / count < 0.6;
+std::string CloudGeodesics::FormatPoint(const Eigen::Vector3d& x) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.1f, %.1f, %.1f)", x.x(), x.y(), x.z());
+  return text;
 }
 
 std::pair<Eigen::Vector3d, int> CloudGeodesics::Snap(const Eigen::Vector3d& x,
@@ -200,7 +170,7 @@ std::pair<Eigen::Vector3d, int> CloudGeodesics::Snap(const Eigen::Vector3d& x,
                   "inside an unscanned region the scan surrounds); give coordinates on the "
                   "surface, in the scan's frame and units (mm)",
                   distance, limit, hole_limit);
-    throw InputError(what + " " + Format(x) + text);
+    throw InputError(what + " " + FormatPoint(x) + text);
   }
   const Eigen::Vector3d point = grid_.surface(node).PlaneAt(hole ? grid_.site(node) : x).point;
   if (snap_mm) *snap_mm = (point - x).norm();
@@ -219,29 +189,6 @@ Propagation& CloudGeodesics::PropagationFrom(const Eigen::Vector3d& source, int 
   if (!cached_ || cached_->source_node() != node || cached_->source() != source)
     cached_ =
         std::make_unique<Propagation>(options_.propagation, grid_, source, node, TakeCachedPool());
-  return *cached_;
-}
-
-std::vector<int> CloudGeodesics::RimNodes(const Eigen::Vector3d& x, double distance,
-                                          int node) const {
-  const double radius = distance + std::max(2 * grid_.cell_size_mm(), 0.5 * distance);
-  std::vector<int> near, rim = {node};
-  std::vector<double> d2;
-  grid_.index().Knn(x, 4096, &near, &d2);
-  for (size_t i = 0; i < near.size() && d2[i] <= radius * radius; ++i) {
-    const int n = grid_.node_of_point(near[i]);
-    if (grid_.component(n) == grid_.component(node) &&
-        std::find(rim.begin(), rim.end(), n) == rim.end())
-      rim.push_back(n);
-  }
-  return rim;
-}
-
-Propagation& CloudGeodesics::HolePropagationFrom(const Eigen::Vector3d& source, double distance,
-                                                 int node) {
-  if (!cached_ || cached_->source_node() != node || cached_->source() != source)
-    cached_ = std::make_unique<Propagation>(options_.propagation, grid_, source,
-                                            RimNodes(source, distance, node), TakeCachedPool());
   return *cached_;
 }
 
@@ -393,7 +340,7 @@ CloudGeodesicPath CloudGeodesics::Between(const Eigen::Vector3d& from, const Eig
   if (grid_.component(node_a) != grid_.component(node_b)) {
     const auto& sizes = grid_.component_points();
     throw InputError(
-        "from " + Format(from) + " to " + Format(to) +
+        "from " + FormatPoint(from) + " to " + FormatPoint(to) +
         ": the points lie on separate pieces of the scan (" +
         std::to_string(sizes[static_cast<size_t>(grid_.component(node_a))]) + " and " +
         std::to_string(sizes[static_cast<size_t>(grid_.component(node_b))]) +
@@ -404,7 +351,7 @@ CloudGeodesicPath CloudGeodesics::Between(const Eigen::Vector3d& from, const Eig
   Propagation& propagation = PropagationFrom(a, node_a);
   propagation.Run(node_b);
   if (!propagation.settled(node_b))
-    throw InputError("from " + Format(from) + " to " + Format(to) +
+    throw InputError("from " + FormatPoint(from) + " to " + FormatPoint(to) +
                      ": no path over the scanned surface connects the two points");
   CloudGeodesicPath result;
   result.from_snap_mm = snap_a;
@@ -442,63 +389,6 @@ CloudGeodesicPath CloudGeodesics::Between(const Eigen::Vector3d& from, const Eig
   FillMissingPlanes(grid_, path, &hints, &planes);
   result.length_mm = SurfaceCurveLength(path, planes);
   result.points = std::move(path);
-  return result;
-}
-
-}  // namespace bespoke
-
-namespace bespoke {
-
-// Between() when an end lies in an unscanned region. Geodesic distance is
-// symmetric, so the wavefront starts at the end in a hole (seeded over its
-// rim, Propagation's hole constructor); when the other end is in a hole too,
-// the answer is the best of its rim nodes plus the chord into it. No final
-// flow: it would pull the chord across the hole onto the rim's surfaces.
-CloudGeodesicPath CloudGeodesics::BetweenAcrossHoles(const Eigen::Vector3d& from,
-                                                     const Eigen::Vector3d& to, int node_a,
-                                                     int node_b, double snap_a, double snap_b,
-                                                     bool hole_a, bool hole_b) {
-  if (!hole_a) {  // start from the end in the hole, then reverse the path
-    CloudGeodesicPath back =
-        BetweenAcrossHoles(to, from, node_b, node_a, snap_b, snap_a, true, false);
-    back.points = back.points.colwise().reverse().eval();
-    std::swap(back.from_snap_mm, back.to_snap_mm);
-    std::swap(back.from_unscanned, back.to_unscanned);
-    return back;
-  }
-  Propagation& propagation = HolePropagationFrom(from, snap_a, node_a);
-  std::vector<int> targets = {node_b};
-  Eigen::Vector3d end = to;
-  if (hole_b) {
-    targets = RimNodes(to, snap_b, node_b);
-  } else {
-    end = grid_.surface(node_b).PlaneAt(to).point;
-  }
-  int best = -1;
-  double best_length = std::numeric_limits<double>::infinity();
-  for (const int target : targets) {
-    propagation.Run(target);
-    if (!propagation.settled(target)) continue;
-    const double length = hole_b
-                              ? propagation.distance_mm(target) + (grid_.site(target) - to).norm()
-                              : propagation.DistanceNear(target, end);
-    if (length < best_length) best_length = length, best = target;
-  }
-  if (best < 0)
-    throw InputError("from " + Format(from) + " to " + Format(to) +
-                     ": no path over the scanned surface connects the two points");
-  CloudGeodesicPath result;
-  result.length_mm = best_length;
-  result.propagated_length_mm = best_length;
-  result.nodes_settled = propagation.stats().settled;
-  Eigen::MatrixX3d path = propagation.Path(best);
-  path.conservativeResize(path.rows() + 1, 3);
-  path.row(path.rows() - 1) = end.transpose();
-  result.points = std::move(path);
-  result.from_snap_mm = snap_a;
-  result.to_snap_mm = snap_b;
-  result.from_unscanned = hole_a;
-  result.to_unscanned = hole_b;
   return result;
 }
 

@@ -30,40 +30,11 @@
 #include <string>
 #include <vector>
 
+#include "measure/cloud_geodesic/cloud_geodesics_options.h"
 #include "measure/cloud_geodesic/cloud_grid.h"
-#include "measure/cloud_geodesic/point_field.h"
 #include "measure/cloud_geodesic/propagation.h"
 
 namespace bespoke {
-
-struct CloudGeodesicsOptions {
-  CloudGridOptions grid;
-  PropagationOptions propagation;
-  // Query points farther than this from the nearest scan point are rejected;
-  // 0 (default) = the larger of 3 cell sizes and 10 mm...
-  double max_snap_distance_mm = 0;
-  // ...unless they lie in an unscanned region: a point up to this far from
-  // the scan that lies ALONG the surface from the nearest scanned skin
-  // (within 20 degrees of its tangent plane) or that the scan surrounds, as
-  // in the crotch or an armpit no sensor saw - not along the normal, as a
-  // point in the air off the skin or inside the body - is snapped to the
-  // nearest scanned skin and flagged (CloudGeodesicPath::from_unscanned).
-  // Default 60 mm; 0 = never.
-  double max_hole_snap_distance_mm = 60;
-  // Point to point: flow the whole path at the end (default true).
-  bool polish = true;
-  // Sample spacing of that final flow; 0 (default) = half a cell.
-  double polish_spacing_mm = 0;
-  CurvatureFlowOptions polish_flow = {100, 0.001, 1.0};  // 100 iterations, 0.001 mm
-  // A final flow that cuts across a gap (round an armpit, between touching
-  // thighs) is undone and the path split at that step, the sample held where
-  // the propagation put it, each part flowed on its own: at most this many
-  // splits deep (default 3, up to 8 parts; 0 = the whole path or nothing).
-  int polish_splits = 3;
-  // Distance fields: the scan points' distances (point_field.h); default on.
-  PointFieldOptions point_field;
-  void Check() const;  // InputError when out of range
-};
 
 struct CloudDistanceField {
   Eigen::VectorXd node_distance_mm;                  // #nodes, +inf where unreachable
@@ -153,6 +124,7 @@ class CloudGeodesics {
                                        bool hole_a, bool hole_b);
   bool InUnscannedRegion(const Eigen::Vector3d& x, double distance, int node) const;
   void SweepPoints(const Eigen::Vector3d& point, const std::vector<int>& rim_nodes);
+  static std::string FormatPoint(const Eigen::Vector3d& x);  // "(x, y, z)", mm
 
   CloudGeodesics(const CloudGeodesicsOptions& options, std::shared_ptr<const CloudGrid> grid);
 
