@@ -499,7 +499,6 @@ void FindTrunkLevels(Context* c) {
       }
       Eigen::Vector3d p = c->P(side);
       p.z() = z;
-      p.z() = z;
       c->Put(std::string(name) + Side(sign), p, z == hip_z ? 0.85 : waist_confidence,
              "section_side_extreme");
     }
