@@ -357,6 +357,22 @@ void Bust(Context* c, double* bust_z) {
   }
 }
 
+// The trunk's rows of slice `s` with, above the crotch, those the structure
+// gives a leg. A leg's part is the nodes nearer its foot than the crotch is,
+// and on a wide pelvis that can reach above the crotch up the hip's side (an
+// obese body's whole left hip side 31 mm above the crotch: its hip point
+// was placed 75 mm inside). Above the crotch the legs have joined and the
+// section is the pelvis's; arms stay out.
+std::vector<int> PelvisRows(const Context& c, const Slice& s) {
+  if (!c.structure.ok || s.z <= c.crotch_z) return c.TrunkRows(s);
+  std::vector<int> rows;
+  for (int r : s.rows) {
+    const Part p = c.PartOf(r);
+    if (p == Part::kTrunk || p == Part::kLegRight || p == Part::kLegLeft) rows.push_back(r);
+  }
+  return rows;
+}
+
 // Most forward y of the trunk within 8 mm of x = x0 in the slice at z.
 double FrontAt(const Context& c, double z, double x0) {
   double best = -kInf;
@@ -490,7 +506,7 @@ void FindTrunkLevels(Context* c) {
   PutSeam(c, "back_waist", waist_z, false, waist_confidence, waist_method);
   PutSeam(c, "middle_hip_front", 0.5 * (hip_z + waist_z), true, 0.8, "midway_waist_hip");
   for (const auto& [name, z] : {std::pair{"side_waist", waist_z}, std::pair{"hip", hip_z}}) {
-    const std::vector<int> rows = c->TrunkRows(c->At(z));
+    const std::vector<int> rows = PelvisRows(*c, c->At(z));
     for (int sign : {+1, -1}) {
       const int side = c->SmoothExtreme(rows, Eigen::Vector3d(sign, 0, 0), 10, 3);
       if (side < 0) {

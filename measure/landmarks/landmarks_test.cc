@@ -212,9 +212,11 @@ TEST(ParametricLandmarks, TPose) {
   std::vector<Tolerance> t_pose = {{"armpit", 60}, {"shoulder", 45}};
   t_pose.insert(t_pose.end(), kParametricA.begin(), kParametricA.end());
   ExpectWithin(set, truth, t_pose, "T-pose");
-  for (const char* name : {"shoulder_right", "shoulder_left"})  // and at the shoulder's height
-    if (set.Has(name))
+  for (const char* name : {"shoulder_right", "shoulder_left"}) {  // and at the shoulder's height
+    if (set.Has(name)) {
       EXPECT_LE(std::abs(set.At(name).position_mm.z() - truth.at(name).z()), 15.0) << name;
+    }
+  }
 }
 
 // A big hole at the right armpit (every point within 40 mm removed, as a
@@ -354,6 +356,23 @@ TEST(MakeHumanLandmarks, SparseScanFindsTheBackOfTheHip) {
   std::printf("seed 1066 hip_back dz %.1f mm, confidence %.2f\n", dz,
               set.At("hip_back").confidence);
   EXPECT_LE(std::abs(dz), 30.0) << "mm";
+}
+
+// An obese body with its arms 5 deg out, on the 250k booth (203 x 152 px):
+// its left leg's part (the nodes nearer the foot than the crotch is) reaches
+// up the hip's side above the crotch, and the hip point was placed 75 mm
+// inside the hip, at its back. The hip's sides are the pelvis section's.
+TEST(MakeHumanLandmarks, HipSidesOfAWidePelvis) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(shared / "data/bodies/makehuman");
+  const testing::ScannedBody scan = ScannedFullMakeHuman(&model, 1071, "arms-5", 203, 152);
+  const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
+  for (const char* name : {"hip_right", "hip_left"}) {
+    ASSERT_TRUE(set.Has(name)) << name;
+    const double dx = set.At(name).position_mm.x() - scan.truth.at(name).x();
+    std::printf("seed 1071 %s dx %.1f mm\n", name, dx);
+    EXPECT_LE(std::abs(dx), 15.0) << name << " (mm)";
+  }
 }
 
 // T-posed MakeHuman bodies of the full range on the 120k booth (141 x 105
