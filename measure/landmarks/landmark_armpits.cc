@@ -376,8 +376,10 @@ int RaiseWithFineLink(const std::vector<double>& wide, const std::vector<double>
   return k;
 }
 
-// The armpit with the structure: in the slices from 100 mm above to 120 mm
-// below the structure's corner, the lateral extent of the trunk's piece
+// The armpit with the structure: in the slices from 160 mm above to 120 mm
+// below the structure's corner (which lies 12-133 mm under the true armpit
+// of the T-posed bodies of the completeness set: the hand-to-foot path
+// turns low round a heavy body's lats), the lateral extent of the trunk's piece
 // (with the arm while they are one section) drops where the arm leaves it:
 // the first slice, going down, 30 mm below the widest of the 60 mm above,
 // for three slices, to within 60 mm of the corner's side (a T-pose arm's
@@ -406,7 +408,7 @@ void FindArmpitFromStructure(Context* c, int sign, double spacing_q90_mm) {
   }
   arm.found = true;
   const Eigen::Vector3d corner = b.armpit[side];
-  const int top = SliceAt(c->slices, corner.z() + 100),
+  const int top = SliceAt(c->slices, corner.z() + 160),
             bottom = SliceAt(c->slices, corner.z() - 120);
   auto extents = [&](double link_mm) {
     std::vector<double> ext(c->slices.size(), -kInf);
