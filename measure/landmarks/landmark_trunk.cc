@@ -295,7 +295,7 @@ double BreastLevel(const Context& c, const std::vector<int>& rows, const Eigen::
 // armpit's distance from the centre line; where a breast stands out ahead
 // of a belly below it (its peak down to 12 % of stature below the armpit),
 // at the breast's level (BreastLevel).
-void Bust(Context* c, double* bust_z) {
+void Bust(Context* c) {
   const double h = c->crown_z;
   for (int sign : {+1, -1}) {
     const std::string name = "bust" + Side(sign);
@@ -353,7 +353,6 @@ void Bust(Context* c, double* bust_z) {
       if (flat >= 0) best = flat, method = "proportion_above_belly";
     }
     c->Put(name, c->P(best), method == "breast_front_max" ? 0.8 : 0.5, method);
-    if (sign > 0) *bust_z = c->points(best, 2);
   }
 }
 
@@ -386,8 +385,7 @@ double FrontAt(const Context& c, double z, double x0) {
 
 void FindTrunkLevels(Context* c) {
   const double h = c->crown_z;
-  double bust_z = -1;
-  Bust(c, &bust_z);
+  Bust(c);
   // Under-bust: on the vertical through the bust point, the front profile
   // bends most sharply (largest second difference over +-10 mm) where the
   // breast's underside meets the chest wall; searched 1-8 % of stature below.
