@@ -83,6 +83,9 @@ bool CrotchFromProfile(const Context& c, double level, Eigen::Vector3d* out) {
   return true;
 }
 
+// A part the pelvis's sections hold: the trunk's or a leg's (no arm).
+bool TrunkOrLeg(Part p) { return p == Part::kTrunk || p == Part::kLegRight || p == Part::kLegLeft; }
+
 // Whether the body's front at x = 0 in the slice at height z is a crease
 // between two thighs that touch. Two signs, either enough:
 //  - the walls: the three most forward points within 6 mm of x = 0 (trunk
@@ -103,8 +106,7 @@ bool FrontIsCrease(const Context& c, double z) {
   std::vector<int> near;
   double middle = 0, front[2] = {-kInf, -kInf};
   for (int r : c.At(z).rows) {
-    const Part p = c.PartOf(r);
-    if (p == Part::kTrunk || p == Part::kLegRight || p == Part::kLegLeft) {
+    if (TrunkOrLeg(c.PartOf(r))) {
       middle += c.points(r, 1);
       const double ax = std::abs(c.points(r, 0));
       if (ax < 14) near.push_back(r);
@@ -365,10 +367,8 @@ void Bust(Context* c) {
 std::vector<int> PelvisRows(const Context& c, const Slice& s) {
   if (!c.structure.ok || s.z <= c.crotch_z) return c.TrunkRows(s);
   std::vector<int> rows;
-  for (int r : s.rows) {
-    const Part p = c.PartOf(r);
-    if (p == Part::kTrunk || p == Part::kLegRight || p == Part::kLegLeft) rows.push_back(r);
-  }
+  for (int r : s.rows)
+    if (TrunkOrLeg(c.PartOf(r))) rows.push_back(r);
   return rows;
 }
 
