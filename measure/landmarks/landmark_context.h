@@ -102,6 +102,9 @@ void PutSeam(Context* c, const std::string& name, double z, bool front, double c
 void FindCrownAndCrotch(Context* c);
 void FindArmpits(Context* c);
 void FindTrunkLevels(Context* c);
+// The under-bust fold's height (mm), placed as "under_bust"; -1 (and the
+// point missing) without a bust point (landmark_under_bust.cc).
+double FindUnderBust(Context* c);
 void FindNeckAndShoulders(Context* c);
 void FindArms(Context* c);
 void FindLegs(Context* c);

@@ -13,14 +13,6 @@
 namespace bespoke::landmarks {
 namespace {
 
-// The under-bust fold's smallest bend (second difference of the front
-// profile over +-10 mm, mm): a slope change of 0.2 (11 deg), a visible
-// corner; a chest whose sharpest bend is smaller is flat (no fold). The
-// oracle's truth uses the same rule (oracle/truth/defined_landmarks.cc). On
-// a scan the bend is noisy, so a flat chest can still show a fold here:
-// docs/landmarks.md, known limits.
-constexpr double kMinFoldBendMm = 2;
-
 // The lowest slice (above 30 % of stature) with one piece spanning x = 0
 // from side to side: below it the legs are two pieces. A hole under the
 // crotch leaves the front and back walls of the pelvis ring, which still
@@ -372,79 +364,12 @@ std::vector<int> PelvisRows(const Context& c, const Slice& s) {
   return rows;
 }
 
-// Most forward y of the trunk within 8 mm of x = x0 in the slice at z.
-double FrontAt(const Context& c, double z, double x0) {
-  double best = -kInf;
-  for (int r : c.TrunkRows(c.At(z))) {
-    if (std::abs(c.points(r, 0) - x0) < 8) best = std::max(best, c.points(r, 1));
-  }
-  return best;
-}
-
 }  // namespace
 
 void FindTrunkLevels(Context* c) {
   const double h = c->crown_z;
   Bust(c);
-  // Under-bust: on the vertical through the bust point, the front profile
-  // bends most sharply (largest second difference over +-10 mm) where the
-  // breast's underside meets the chest wall; searched 1-8 % of stature below.
-  double under_z = -1;
-  if (c->Has("bust_right") || c->Has("bust_left")) {
-    const Eigen::Vector3d bust = c->Has("bust_right") ? c->Pos("bust_right") : c->Pos("bust_left");
-    // The bend averaged over both breasts' verticals where found: the range
-    // noise in one profile's second difference rivals a small fold's bend.
-    std::vector<double> xs;
-    for (const char* name : {"bust_right", "bust_left"})
-      if (c->Has(name)) xs.push_back(c->Pos(name).x());
-    // FrontAt per vertical and slice, computed once: each slice serves
-    // three stations' second differences.
-    std::vector<std::map<int, double>> fronts(xs.size());
-    const auto front = [&](size_t i, double z) {
-      const int s = SliceAt(c->slices, z);
-      auto it = fronts[i].find(s);
-      if (it == fronts[i].end()) it = fronts[i].emplace(s, FrontAt(*c, z, xs[i])).first;
-      return it->second;
-    };
-    const auto bend_at = [&](double z) {
-      double sum = 0;
-      for (size_t i = 0; i < xs.size(); ++i)
-        sum += front(i, z + 10) - 2 * front(i, z) + front(i, z - 10);
-      return sum / static_cast<double>(xs.size());
-    };
-    // The fold: going down from the bust, the first local peak of the bend
-    // that reaches half the sharpest bend in the window (a flat chest's
-    // pectoral edge is a weak fold, and a belly's top lower down can bend
-    // more), then the vertex of the bend profile's parabola around it
-    // (profile_extreme.h), off the slice grid. Above the fold the breast's
-    // front is convex (negative bend), so nothing there competes.
-    std::vector<double> at, bends;
-    std::vector<bool> inside;
-    double sharpest = -kInf;
-    for (double z = bust.z() - 0.08 * h - 2 * c->step; z < bust.z() - 0.01 * h + 2 * c->step;
-         z += c->step) {
-      at.push_back(c->At(z).z);
-      bends.push_back(bend_at(at.back()));
-      inside.push_back(z >= bust.z() - 0.08 * h && z < bust.z() - 0.01 * h);
-      if (inside.back() && std::isfinite(bends.back())) sharpest = std::max(sharpest, bends.back());
-    }
-    for (size_t k = at.size() - 1; k-- > 1 && sharpest >= kMinFoldBendMm && under_z < 0;) {
-      if (inside[k] && bends[k] >= 0.5 * sharpest && !(bends[k - 1] > bends[k]) &&
-          !(bends[k + 1] > bends[k])) {
-        ProfileExtremeOptions peak;
-        peak.minimum = false;
-        peak.half_window = 2;
-        under_z = ProfileExtreme(peak, at, bends, k);
-      }
-    }
-    // A flat chest (most men) has a weak fold that noise can rival, hence
-    // the lower confidence; with no bend of kMinFoldBendMm, 4 % of stature
-    // under the bust point (docs/landmarks.md).
-    if (under_z < 0) under_z = bust.z() - 0.04 * h;
-    PutSeam(c, "under_bust", under_z, true, 0.6, "front_profile_bend");
-  } else {
-    c->Missing("under_bust", "needs the bust point");
-  }
+  const double under_z = FindUnderBust(c);
   // Hip (seat) level: the most backward point of the buttocks, between the
   // crotch and 10 % of stature under the under-bust level, at least 10 % of
   // stature above the crotch (an under-bust found low on a big belly).
