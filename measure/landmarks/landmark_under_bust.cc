@@ -15,26 +15,69 @@ namespace {
 // profile over +-10 mm, mm): a slope change of 0.2 (11 deg), a visible
 // corner; a chest whose sharpest bend is smaller is flat (no fold). The
 // oracle's truth uses the same rule (oracle/truth/defined_landmarks.cc). On
-// a scan the bend is noisy, so a flat chest can still show a fold here:
-// docs/landmarks.md, known limits.
+// a scan a bend near it can read either way: docs/landmarks.md, known
+// limits.
 constexpr double kMinFoldBendMm = 2;
 
-// Most forward y of the trunk within 8 mm of x = x0 in the slice at z.
-double FrontAt(const Context& c, double z, double x0) {
-  double best = -kInf;
-  for (int r : c.TrunkRows(c.At(z))) {
-    if (std::abs(c.points(r, 0) - x0) < 8) best = std::max(best, c.points(r, 1));
+// The plane y = a + b (z' - z) + c (x' - x0) through the points `rows` by
+// least squares: (a, b, c), a in mm.
+Eigen::Vector3d FitFrontPlane(const Context& c, const std::vector<int>& rows, double z, double x0) {
+  Eigen::MatrixX3d a(static_cast<Eigen::Index>(rows.size()), 3);
+  Eigen::VectorXd y(a.rows());
+  for (Eigen::Index i = 0; i < a.rows(); ++i) {
+    const int r = rows[static_cast<size_t>(i)];
+    a.row(i) << 1, c.points(r, 2) - z, c.points(r, 0) - x0;
+    y(i) = c.points(r, 1);
   }
-  return best;
+  return a.colPivHouseholderQr().solve(y);
+}
+
+// The trunk's front (largest y) on the vertical x = x0 at the plane of the
+// slice at z: a plane (FitFrontPlane) fitted to the slice's trunk points
+// within 8 mm of x0 and 25 mm of the foremost, points more than 4 mm behind
+// it dropped and the plane refitted (at most three times: the chest wall
+// under an overhanging breast), its value at x0, kept within the fitted
+// points' range of y (a few points in a thin band of z fix the slopes
+// badly: a 60k-point scan holds 2-6 points here). The foremost point alone
+// depends on which points the slice happens to hold: on a breast's steep
+// underside it moves a few mm from slice to slice, and the fold's second
+// difference had noise peaks over the fold's own. With fewer than 4 points
+// the foremost; -inf with none.
+double FrontAt(const Context& c, double z, double x0) {
+  const Slice& slice = c.At(z);
+  std::vector<int> rows;
+  double top = -kInf;
+  for (int r : c.TrunkRows(slice)) {
+    if (std::abs(c.points(r, 0) - x0) >= 8) continue;
+    rows.push_back(r);
+    top = std::max(top, c.points(r, 1));
+  }
+  const auto far_behind = [&](int r) { return c.points(r, 1) < top - 25; };
+  rows.erase(std::remove_if(rows.begin(), rows.end(), far_behind), rows.end());
+  double front = top, lowest = top;
+  for (int r : rows) lowest = std::min(lowest, c.points(r, 1));
+  for (int pass = 0; pass < 3 && rows.size() >= 4; ++pass) {
+    const Eigen::Vector3d plane = FitFrontPlane(c, rows, slice.z, x0);
+    front = plane(0);
+    const auto behind = [&](int r) {
+      const Eigen::Vector3d at(1, c.points(r, 2) - slice.z, c.points(r, 0) - x0);
+      return c.points(r, 1) - plane.dot(at) < -4;
+    };
+    const size_t before = rows.size();
+    rows.erase(std::remove_if(rows.begin(), rows.end(), behind), rows.end());
+    if (rows.size() == before) break;
+  }
+  return std::isfinite(top) ? std::clamp(front, lowest, top) : top;
 }
 
 // The fold on the bend profile (bends[k] at heights at[k], `inside` the
-// search window): going down, the first local peak that reaches half the
-// window's sharpest bend (a flat chest's pectoral edge is a weak fold, and a
-// belly's top lower down can bend more), then the vertex of the profile's
-// parabola around it (profile_extreme.h), off the slice grid. Above the fold
-// the breast's front is convex (negative bend), so nothing there competes.
-// -1 when the sharpest bend is under kMinFoldBendMm (a flat chest).
+// search window, with samples beyond both ends): going down, the first
+// local peak that reaches half the window's sharpest bend (a flat chest's
+// pectoral edge is a weak fold, and a belly's top lower down can bend
+// more), then the vertex of the profile's parabola around it
+// (profile_extreme.h), off the slice grid. Above the fold the breast's front
+// is convex (negative bend), so nothing there competes. -1 when the
+// sharpest bend is under kMinFoldBendMm (a flat chest).
 double FoldOnBends(const std::vector<double>& at, const std::vector<double>& bends,
                    const std::vector<bool>& inside) {
   double sharpest = -kInf;
@@ -42,8 +85,12 @@ double FoldOnBends(const std::vector<double>& at, const std::vector<double>& ben
     if (inside[k] && std::isfinite(bends[k])) sharpest = std::max(sharpest, bends[k]);
   if (!(sharpest >= kMinFoldBendMm)) return -1;
   for (size_t k = at.size() - 1; k-- > 1;) {
+    // The window's top sample is a peak when the bend still rises above it:
+    // the window hangs from the found bust point, and where that lies low
+    // (a bust point placed by proportion) the fold can sit at its top.
+    const bool rising_out = !inside[k + 1];
     if (inside[k] && bends[k] >= 0.5 * sharpest && !(bends[k - 1] > bends[k]) &&
-        !(bends[k + 1] > bends[k])) {
+        (rising_out || !(bends[k + 1] > bends[k]))) {
       ProfileExtremeOptions peak;
       peak.minimum = false;
       peak.half_window = 2;
