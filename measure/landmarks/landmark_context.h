@@ -2,9 +2,10 @@
 // measure/landmarks; the public interface is landmarks.h).
 //
 // Stages, in order (each in its own .cc): trunk levels and the crotch
-// (landmark_trunk.cc), armpits and axilla folds (landmark_armpits.cc), neck
-// and shoulders (landmark_neck.cc), arms (landmark_arms.cc), legs
-// (landmark_legs.cc). A stage reads what earlier ones found from `found`.
+// (landmark_trunk.cc; the under-bust in landmark_under_bust.cc), armpits
+// and axilla folds (landmark_armpits.cc), neck and shoulders
+// (landmark_neck.cc), arms (landmark_arms.cc), legs (landmark_legs.cc). A
+// stage reads what earlier ones found from `found`.
 // Sides: a paired stage runs once per side with `sign` = +1 for the right
 // (+x) and -1 for the left; it works in x' = sign * x.
 #ifndef BESPOKE_MEASURE_LANDMARKS_LANDMARK_CONTEXT_H_

@@ -90,14 +90,15 @@ double SectionGirth(const std::vector<SectionLoop>& section) {
 }
 
 // The fold under the breast, the same rule as the detector's
-// (measure/landmarks/landmark_trunk.cc): the front profile's bend (second
-// difference over +-kFoldHalfSpanMm) searched kFoldTop-kFoldBottom of
-// stature under the bust point; going down, its first local peak that is
-// positive and reaches half the band's sharpest bend (a flat chest's
-// pectoral edge is a weak fold, a belly's top lower down can bend more);
-// a band whose sharpest bend is under kMinFoldBendMm (a slope change of
-// 0.2, 11 deg: a flat chest) has no fold, and the under-bust lies
-// kNoFoldDrop of stature under the bust point.
+// (measure/landmarks/landmark_under_bust.cc, which reads a scan's front
+// through a fitted plane; here the exact section's): the front profile's
+// bend (second difference over +-kFoldHalfSpanMm) searched
+// kFoldTop-kFoldBottom of stature under the bust point; going down, its
+// first local peak that is positive and reaches half the band's sharpest
+// bend (a flat chest's pectoral edge is a weak fold, a belly's top lower
+// down can bend more); a band whose sharpest bend is under kMinFoldBendMm (a
+// slope change of 0.2, 11 deg: a flat chest) has no fold, and the
+// under-bust lies kNoFoldDrop of stature under the bust point.
 constexpr double kFoldHalfSpanMm = 10, kFoldTop = 0.01, kFoldBottom = 0.08;
 constexpr double kMinFoldBendMm = 2, kNoFoldDrop = 0.04;
 
