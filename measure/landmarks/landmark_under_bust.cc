@@ -38,7 +38,7 @@ Eigen::Vector3d FitFrontPlane(const Context& c, const std::vector<int>& rows, do
 // it dropped and the plane refitted (at most three times: the chest wall
 // under an overhanging breast), its value at x0, kept within the fitted
 // points' range of y (a few points in a thin band of z fix the slopes
-// badly: a 60k-point scan holds 2-6 points here). The foremost point alone
+// badly: a 60k-point scan holds 0-6 points here). The foremost point alone
 // depends on which points the slice happens to hold: on a breast's steep
 // underside it moves a few mm from slice to slice, and the fold's second
 // difference had noise peaks over the fold's own. With fewer than 4 points
@@ -67,7 +67,7 @@ double FrontAt(const Context& c, double z, double x0) {
     rows.erase(std::remove_if(rows.begin(), rows.end(), behind), rows.end());
     if (rows.size() == before) break;
   }
-  return std::isfinite(top) ? std::clamp(front, lowest, top) : top;
+  return std::clamp(front, lowest, top);
 }
 
 // The fold on the bend profile (bends[k] at heights at[k], `inside` the
