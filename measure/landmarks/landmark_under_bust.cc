@@ -11,13 +11,18 @@
 namespace bespoke::landmarks {
 namespace {
 
-// The under-bust fold's smallest bend (second difference of the front
-// profile over +-10 mm, mm): a slope change of 0.2 (11 deg), a visible
-// corner; a chest whose sharpest bend is smaller is flat (no fold). The
-// oracle's truth uses the same rule (oracle/truth/defined_landmarks.cc). On
-// a scan a bend near it can read either way: docs/landmarks.md, known
-// limits.
-constexpr double kMinFoldBendMm = 2;
+// The fold's weight in the under-bust's level by its strength (FoldOnBends):
+// none under kNoFoldBendMm (a slope change of 0.1, 6 deg: a flat chest,
+// whose level is kNoFoldDrop of stature under the bust point), all over
+// kFoldBendMm (0.3, 17 deg: a visible fold), in proportion between. A single
+// threshold would move the level the whole way from the fold to the flat
+// chest's for a bend read 0.1 mm flatter on a scan than on the mesh. The
+// oracle's truth uses the same rule (oracle/truth/defined_landmarks.cc).
+constexpr double kNoFoldBendMm = 1, kFoldBendMm = 3, kNoFoldDrop = 0.04;
+
+double FoldWeight(double strength_mm) {
+  return std::clamp((strength_mm - kNoFoldBendMm) / (kFoldBendMm - kNoFoldBendMm), 0.0, 1.0);
+}
 
 // The plane y = a + b (z' - z) + c (x' - x0) through the points `rows` by
 // least squares: (a, b, c), a in mm.
@@ -76,28 +81,41 @@ double FrontAt(const Context& c, double z, double x0) {
 // pectoral edge is a weak fold, and a belly's top lower down can bend
 // more), then the vertex of the profile's parabola around it
 // (profile_extreme.h), off the slice grid. Above the fold the breast's front
-// is convex (negative bend), so nothing there competes. -1 when the
-// sharpest bend is under kMinFoldBendMm (a flat chest).
-double FoldOnBends(const std::vector<double>& at, const std::vector<double>& bends,
-                   const std::vector<bool>& inside) {
-  double sharpest = -kInf;
-  for (size_t k = 0; k < at.size(); ++k)
-    if (inside[k] && std::isfinite(bends[k])) sharpest = std::max(sharpest, bends[k]);
-  if (!(sharpest >= kMinFoldBendMm)) return -1;
+// is convex (negative bend), so nothing there competes. Its level (-1 when
+// no bend in the window is positive), the window's sharpest bend and its
+// strength: the sharpest of the bends averaged over three slices (+-5 mm at
+// the default step), as the truth's; the largest of a row of single noisy
+// bends reads a flat front sharper than it is.
+struct Fold {
+  double level_mm = -1;
+  double sharpest_mm = 0;
+  double strength_mm = 0;
+};
+Fold FoldOnBends(const std::vector<double>& at, const std::vector<double>& bends,
+                 const std::vector<bool>& inside) {
+  Fold fold;
+  const std::vector<double> mean = WindowMean(bends, 1, 3);
+  for (size_t k = 0; k < at.size(); ++k) {
+    if (!inside[k]) continue;
+    if (std::isfinite(bends[k])) fold.sharpest_mm = std::max(fold.sharpest_mm, bends[k]);
+    if (std::isfinite(mean[k])) fold.strength_mm = std::max(fold.strength_mm, mean[k]);
+  }
+  if (!(fold.sharpest_mm > 0)) return fold;
   for (size_t k = at.size() - 1; k-- > 1;) {
     // The window's top sample is a peak when the bend still rises above it:
     // the window hangs from the found bust point, and where that lies low
     // (a bust point placed by proportion) the fold can sit at its top.
     const bool rising_out = !inside[k + 1];
-    if (inside[k] && bends[k] >= 0.5 * sharpest && !(bends[k - 1] > bends[k]) &&
+    if (inside[k] && bends[k] >= 0.5 * fold.sharpest_mm && !(bends[k - 1] > bends[k]) &&
         (rising_out || !(bends[k + 1] > bends[k]))) {
       ProfileExtremeOptions peak;
       peak.minimum = false;
       peak.half_window = 2;
-      return ProfileExtreme(peak, at, bends, k);
+      fold.level_mm = ProfileExtreme(peak, at, bends, k);
+      break;
     }
   }
-  return -1;
+  return fold;
 }
 
 }  // namespace
@@ -136,10 +154,12 @@ double FindUnderBust(Context* c) {
     inside.push_back(z >= bust.z() - 0.08 * h && z < bust.z() - 0.01 * h);
   }
   // A flat chest (most men) has a weak fold that noise can rival, hence
-  // the lower confidence; with no bend of kMinFoldBendMm, 4 % of stature
-  // under the bust point (docs/landmarks.md).
-  double under_z = FoldOnBends(at, bends, inside);
-  if (under_z < 0) under_z = bust.z() - 0.04 * h;
+  // the lower confidence; the level moves from the fold to the flat chest's
+  // as the fold weakens (FoldWeight, docs/landmarks.md).
+  const Fold fold = FoldOnBends(at, bends, inside);
+  const double flat = bust.z() - kNoFoldDrop * h;
+  const double under_z =
+      fold.level_mm < 0 ? flat : flat + FoldWeight(fold.strength_mm) * (fold.level_mm - flat);
   PutSeam(c, "under_bust", under_z, true, 0.6, "front_profile_bend");
   return under_z;
 }

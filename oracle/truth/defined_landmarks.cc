@@ -96,11 +96,23 @@ double SectionGirth(const std::vector<SectionLoop>& section) {
 // kFoldTop-kFoldBottom of stature under the bust point; going down, its
 // first local peak that is positive and reaches half the band's sharpest
 // bend (a flat chest's pectoral edge is a weak fold, a belly's top lower
-// down can bend more); a band whose sharpest bend is under kMinFoldBendMm (a
-// slope change of 0.2, 11 deg: a flat chest) has no fold, and the
-// under-bust lies kNoFoldDrop of stature under the bust point.
+// down can bend more). A flat chest has no fold: its level is kNoFoldDrop of
+// stature under the bust point. Between the two the level moves
+// continuously (FoldWeight) with the fold's strength, the band's largest
+// bend averaged over +-kFoldStrengthHalfMm (the detector's three slices):
+// under kNoFoldBendMm (a slope change of 0.1, 6 deg) the flat chest's level,
+// over kFoldBendMm (0.3, 17 deg) the fold's, in between the point between
+// them in proportion. A single threshold would move the level the whole way
+// from the fold to the flat chest's for a bend read 0.1 mm flatter on a
+// scan.
 constexpr double kFoldHalfSpanMm = 10, kFoldTop = 0.01, kFoldBottom = 0.08;
-constexpr double kMinFoldBendMm = 2, kNoFoldDrop = 0.04;
+constexpr double kNoFoldBendMm = 1, kFoldBendMm = 3, kNoFoldDrop = 0.04, kFoldStrengthHalfMm = 5;
+
+// The fold's weight (0-1) in the under-bust's level for a fold of strength
+// strength_mm.
+double FoldWeight(double strength_mm) {
+  return std::clamp((strength_mm - kNoFoldBendMm) / (kFoldBendMm - kNoFoldBendMm), 0.0, 1.0);
+}
 
 // The z in [lo, hi] maximising score(z): a scan in `step` steps, then one
 // refinement to step / 8 around the best.
@@ -120,19 +132,33 @@ double ArgMax(double lo, double hi, double step, const std::function<double(doub
 
 // Going down from hi, the first local maximum of `bend` in [lo, hi] (sampled
 // in `step` steps, one step beyond each end for its neighbours) that is at
-// least half the band's largest; refined to step / 8 around it. NaN when the
-// band's largest is under min_peak.
-double FirstCorner(double lo, double hi, double step, double min_peak,
-                   const std::function<double(double)>& bend) {
+// least half the band's largest; refined to step / 8 around it. Its level
+// (NaN when the band's largest is not positive), the band's largest and the
+// fold's strength.
+struct Corner {
+  double level_mm = std::numeric_limits<double>::quiet_NaN();
+  double sharpest_mm = 0;
+  double strength_mm = 0;  // the largest of bend averaged at z and z +- kFoldStrengthHalfMm
+};
+Corner FirstCorner(double lo, double hi, double step, const std::function<double(double)>& bend) {
   std::vector<double> at, value;
   for (double z = lo - step; z <= hi + step; z += step) at.push_back(z), value.push_back(bend(z));
-  double sharpest = 0;
-  for (std::size_t k = 1; k + 1 < at.size(); ++k) sharpest = std::max(sharpest, value[k]);
-  for (std::size_t k = at.size() - 2; k >= 1 && sharpest >= min_peak; --k) {
-    if (value[k] >= 0.5 * sharpest && value[k] >= value[k - 1] && value[k] >= value[k + 1])
-      return ArgMax(std::max(lo, at[k] - step), std::min(hi, at[k] + step), step / 8, bend);
+  Corner corner;
+  for (std::size_t k = 1; k + 1 < at.size(); ++k) {
+    corner.sharpest_mm = std::max(corner.sharpest_mm, value[k]);
+    const double h = kFoldStrengthHalfMm;
+    corner.strength_mm =
+        std::max(corner.strength_mm, (bend(at[k] - h) + value[k] + bend(at[k] + h)) / 3);
   }
-  return std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t k = at.size() - 2; k >= 1 && corner.sharpest_mm > 0; --k) {
+    if (value[k] >= 0.5 * corner.sharpest_mm && value[k] >= value[k - 1] &&
+        value[k] >= value[k + 1]) {
+      corner.level_mm =
+          ArgMax(std::max(lo, at[k] - step), std::min(hi, at[k] + step), step / 8, bend);
+      break;
+    }
+  }
+  return corner;
 }
 
 // The calf's level in [lo, hi]: like ArgMax, but only among the levels
@@ -222,10 +248,13 @@ DefinedLevels PlaceDefinedLandmarks(const DefinedLandmarkOptions& options,
                   FrontAt(section, std::clamp(bust_l.x(), lo, hi)).y());
   };
   const double stature = mesh.vertices.col(2).maxCoeff(), h = kFoldHalfSpanMm;
-  levels.under_bust_mm =
-      FirstCorner(bust_z - kFoldBottom * stature, bust_z - kFoldTop * stature, step, kMinFoldBendMm,
+  const Corner fold =
+      FirstCorner(bust_z - kFoldBottom * stature, bust_z - kFoldTop * stature, step,
                   [&](double z) { return depth(z + h) + depth(z - h) - 2 * depth(z); });
-  if (!std::isfinite(levels.under_bust_mm)) levels.under_bust_mm = bust_z - kNoFoldDrop * stature;
+  const double flat = bust_z - kNoFoldDrop * stature;
+  levels.under_bust_mm = std::isfinite(fold.level_mm)
+                             ? flat + FoldWeight(fold.strength_mm) * (fold.level_mm - flat)
+                             : flat;
   // A hanging breast: the bend lies within `h` of its underside and its tip
   // can still be in the section; the tape goes just below it.
   for (int k = 0; k < 120 && TrunkSection(mesh, levels.under_bust_mm).size() > 1; ++k)
