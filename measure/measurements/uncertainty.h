@@ -26,9 +26,9 @@
 namespace bespoke {
 
 struct UncertaintyOptions {
-  // Calibration factor on the datum points' part (default 3, fitted on the
+  // Calibration factor on the datum points' part (default 2, fitted on the
   // oracle: docs/measuring.md, "Uncertainty").
-  double scale = 3.0;
+  double scale = 2.0;
   double bridge_share = 0.1;     // SD of a bridge per mm bridged (default 0.1)
   double noise_factor = 1.0;     // SD per mm of scan noise (default 1)
   double spacing_factor = 0.25;  // SD per mm of point spacing (default 0.25)
