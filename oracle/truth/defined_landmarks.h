@@ -13,12 +13,12 @@
 //     points, 1-8 % of stature below them, going down, the first corner of
 //     the front profile (a local maximum of the second difference of its
 //     depth over +-10 mm, at least half the band's largest: a belly's top
-//     lower down can bend more); a band whose largest is under 1 mm (a flat
-//     chest) has no fold and the level is 4 % of stature below them, one
-//     over 3 mm the fold's, one in between the point between them in
-//     proportion (the detector's rule; no threshold where a bend read a
-//     little differently jumps the level); the point on x = 0 at that
-//     level. A hanging breast's underside is that
+//     lower down can bend more); the fold's strength is the band's largest
+//     bend averaged over +-5 mm: under 1 mm (a flat chest) there is no fold
+//     and the level is 4 % of stature below them, over 3 mm the fold's, in
+//     between the point between them in proportion (the detector's rule; no
+//     threshold where a bend read a little differently jumps the level); the
+//     point on x = 0 at that level. A hanging breast's underside is that
 //     bend; where the breast is a loop of its own there, the level moves
 //     down (0.5 mm steps, at most 60 mm) until the section is free of it:
 //     the tape goes just below the breasts.
