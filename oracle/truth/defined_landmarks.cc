@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 
 #include "oracle/truth/mesh_section.h"
 #include "scanners/core/errors.h"
@@ -239,13 +240,20 @@ DefinedLevels PlaceDefinedLandmarks(const DefinedLandmarkOptions& options,
   // included), so a hanging breast gives its underside.
   const Eigen::Vector3d bust_r = At(*body, "bust_right"), bust_l = At(*body, "bust_left");
   const double bust_z = 0.5 * (bust_r.z() + bust_l.z());
+  // Each level's depth once (keyed to the micrometre): the bends at the
+  // step grid, their +-10 mm stations and the strength's +-5 mm neighbours
+  // land on the same levels many times.
+  std::map<long long, double> depths;
   const auto depth = [&](double z) {
+    const auto [it, fresh] = depths.try_emplace(std::llround(z * 1000), 0.0);
+    if (!fresh) return it->second;
     const std::vector<SectionLoop> section = TrunkSection(mesh, z);
     // In the bust points' sagittal planes, kept within the main loop's width.
     const Eigen::MatrixX3d& main = section.front().points;
     const double lo = 0.8 * main.col(0).minCoeff(), hi = 0.8 * main.col(0).maxCoeff();
-    return 0.5 * (FrontAt(section, std::clamp(bust_r.x(), lo, hi)).y() +
-                  FrontAt(section, std::clamp(bust_l.x(), lo, hi)).y());
+    it->second = 0.5 * (FrontAt(section, std::clamp(bust_r.x(), lo, hi)).y() +
+                        FrontAt(section, std::clamp(bust_l.x(), lo, hi)).y());
+    return it->second;
   };
   const double stature = mesh.vertices.col(2).maxCoeff(), h = kFoldHalfSpanMm;
   const Corner fold =
