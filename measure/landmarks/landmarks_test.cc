@@ -583,10 +583,10 @@ TEST(ParametricLandmarks, UnderBustAtTheFoldNotANoisePeakAboveIt) {
 // The average woman's bust grown 10 mm at a time from 880 to 920 mm: the
 // fold under it sharpens from a bend of about 1 mm to about 3.5 mm on the
 // exact mesh (DefinedUnderBust.AFoldThatSharpensMovesTheLevelSmoothly), and
-// the fitted front reads it a little flatter. The level moves with the
-// bend on both sides, so the found under-bust stays near the truth's
-// across the change; a single threshold put one side at the fold and the
-// other at the flat chest's level 14 mm under it.
+// the scan reads its bend a little differently. The level moves with the
+// bend on both sides, so the found under-bust stays near the truth's across
+// the change; a single threshold can put one side at the fold and the
+// other at the flat chest's level under it.
 TEST(ParametricLandmarks, UnderBustFollowsAFoldThatSharpens) {
   for (double girth = 880; girth <= 920; girth += 10) {
     ParametricBodyOptions options;

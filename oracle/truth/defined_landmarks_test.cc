@@ -120,8 +120,8 @@ TEST(DefinedUnderBust, AFlatChestHasTheNoFoldLevel) {
 
 // The average woman's bust grown 5 mm at a time from 880 to 925 mm: its fold
 // sharpens from a bend of about 1 mm to about 4 mm (brute force, printed),
-// and the level goes from the flat chest's to the fold's 14 mm above it
-// without a jump (a single threshold at 2 mm moves it 14 mm in one step).
+// and the level goes from the flat chest's to the fold's above it without a
+// jump (a single threshold moves it the whole way in one step).
 TEST(DefinedUnderBust, AFoldThatSharpensMovesTheLevelSmoothly) {
   double previous = -1, first_sharpest = 0, last_sharpest = 0;
   for (double girth = 880; girth <= 925; girth += 5) {
