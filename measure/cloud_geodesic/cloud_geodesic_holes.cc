@@ -17,9 +17,10 @@ namespace bespoke {
 
 // Whether `x` (`distance` from the nearest scan point, in node `node`) lies
 // in a hole of the scan rather than in the air off the skin or inside the
-// body: either the scan points of the node's piece around it (within
-// `distance` plus a margin) lie on all sides of it - the mean of the unit
-// directions to them is short - or it lies along the surface from the
+// body: either the scan points of the node's piece around it (at least 20
+// within `distance` plus a margin, or where fewer, within twice `distance`
+// plus the margin) lie on all sides of it - the mean of the unit directions
+// to them is short - or it lies along the surface from the
 // nearest scanned skin (within 20 degrees of that node's tangent plane), as
 // a point in a crease no sensor saw (the crotch, an armpit) does. A point in
 // the air or inside the body lies along the normal and sees the scan on one
@@ -30,19 +31,29 @@ bool CloudGeodesics::InUnscannedRegion(const Eigen::Vector3d& x, double distance
   if (away.norm() > 0 && std::abs(plane.normal.dot(away)) <= 0.35 * away.norm())
     return true;  // 20 deg
   const int component = grid_.component(node);
-  const double radius = distance + std::max(2 * grid_.cell_size_mm(), 0.5 * distance);
   std::vector<int> near;
   std::vector<double> d2;
   grid_.index().Knn(x, 1024, &near, &d2);
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  int count = 0;
-  for (size_t i = 0; i < near.size(); ++i) {
-    if (d2[i] > radius * radius || d2[i] <= 0) continue;
-    if (grid_.component(grid_.node_of_point(near[i])) != component) continue;
-    sum += (grid_.index().points().row(near[i]).transpose() - x) / std::sqrt(d2[i]);
-    ++count;
-  }
-  return count >= 20 && sum.norm() / count < 0.6;
+  // Whether at least 20 points of the piece within `radius` lie on all sides.
+  const auto surrounded_within = [&](double radius, bool* enough) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    int count = 0;
+    for (size_t i = 0; i < near.size(); ++i) {
+      if (d2[i] > radius * radius || d2[i] <= 0) continue;
+      if (grid_.component(grid_.node_of_point(near[i])) != component) continue;
+      sum += (grid_.index().points().row(near[i]).transpose() - x) / std::sqrt(d2[i]);
+      ++count;
+    }
+    *enough = count >= 20;
+    return *enough && sum.norm() / count < 0.6;
+  };
+  const double margin = std::max(2 * grid_.cell_size_mm(), 0.5 * distance);
+  bool enough = false;
+  const bool surrounded = surrounded_within(distance + margin, &enough);
+  if (enough) return surrounded;
+  // A sparse scan round a deep hole (a light booth under the crotch): too
+  // few points that near to judge; the rim up to twice as far.
+  return surrounded_within(2 * distance + margin, &enough);
 }
 
 std::vector<int> CloudGeodesics::RimNodes(const Eigen::Vector3d& x, double distance,
