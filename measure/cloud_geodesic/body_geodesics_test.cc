@@ -24,21 +24,32 @@ namespace {
 // on how the gap is crossed and are reported, not held to the target.
 constexpr double kSeenMm = 4.0;
 
-TEST(BodyGeodesics, DatumPointLengthsOnAVirtualScanMatchExactMeshGeodesics) {
-  ParametricBodyOptions shape;  // an average woman, coarse mesh for a fast exact reference
+// An average woman on a coarse mesh, for a fast exact reference.
+Body CoarseWoman() {
+  ParametricBodyOptions shape;
   shape.torso_segments = 48;
   shape.arm_segments = 32;
   shape.ring_spacing_mm = 20;
   shape.girth_ring_segments = 64;
   shape.max_girth_deficit_mm = 1.0;  // the girths are not what is tested here
-  const Body body = GenerateParametricBody(shape);
+  return GenerateParametricBody(shape);
+}
+
+// A lighter booth (about 150k points), no floor or outliers, 0.5 mm noise.
+ScanSimResult LightScan(const Body& body, std::uint64_t seed) {
   ScanSimOptions booth;
-  booth.booth.width_px = 160;  // a lighter booth: about 150k points
+  booth.booth.width_px = 160;
   booth.booth.height_px = 120;
   booth.floor = false;
   booth.outlier_fraction = 0;
   booth.noise_sigma_mm = 0.5;
-  const ScanSimResult scan = SimulateScan(booth, body.mesh);
+  booth.seed = seed;
+  return SimulateScan(booth, body.mesh);
+}
+
+TEST(BodyGeodesics, DatumPointLengthsOnAVirtualScanMatchExactMeshGeodesics) {
+  const Body body = CoarseWoman();
+  const ScanSimResult scan = LightScan(body, 1);
 
   // Every segment of every geodesic measurement's datum chain, once, grouped
   // by start point (CGAL reuses one propagation per start point).
@@ -112,26 +123,13 @@ TEST(BodyGeodesics, DatumPointLengthsOnAVirtualScanMatchExactMeshGeodesics) {
 // of the exact geodesic (the crotch length's bridge allowance of
 // docs/measuring.md).
 TEST(BodyGeodesics, TheCrotchInASparseHoleIsReachedOnEveryScan) {
-  ParametricBodyOptions shape;
-  shape.torso_segments = 48;
-  shape.arm_segments = 32;
-  shape.ring_spacing_mm = 20;
-  shape.girth_ring_segments = 64;
-  shape.max_girth_deficit_mm = 1.0;
-  const Body body = GenerateParametricBody(shape);
+  const Body body = CoarseWoman();
   const SurfacePoint& crotch = body.landmarks.at("crotch");
   const SurfacePoint& waist = body.landmarks.at("front_waist");
   ExactGeodesics exact(body.mesh);
   const double truth = exact.Distance(crotch, waist);
   for (std::uint64_t seed : {1, 2, 3}) {
-    ScanSimOptions booth;
-    booth.booth.width_px = 160;
-    booth.booth.height_px = 120;
-    booth.floor = false;
-    booth.outlier_fraction = 0;
-    booth.noise_sigma_mm = 0.5;
-    booth.seed = seed;
-    const ScanSimResult scan = SimulateScan(booth, body.mesh);
+    const ScanSimResult scan = LightScan(body, seed);
     CloudGeodesics cloud({}, scan.cloud.points);
     double length = 0;
     ASSERT_NO_THROW(
