@@ -120,8 +120,8 @@ TEST(BodyGeodesics, DatumPointLengthsOnAVirtualScanMatchExactMeshGeodesics) {
 // with fewer than 20 scan points within 1.5 times that distance on two of
 // them (scanner seeds 2 and 3). It is accepted as unscanned on every scan and
 // the path from it to the front waist is bridged, not refused; within 10 mm
-// of the exact geodesic (the crotch length's bridge allowance of
-// docs/measuring.md).
+// of the exact geodesic (what docs/measuring.md holds a length from a datum
+// point in a scan hole to, the inside leg's).
 TEST(BodyGeodesics, TheCrotchInASparseHoleIsReachedOnEveryScan) {
   const Body body = CoarseWoman();
   const SurfacePoint& crotch = body.landmarks.at("crotch");
