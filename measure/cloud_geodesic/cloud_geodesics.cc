@@ -368,28 +368,33 @@ CloudGeodesicPath CloudGeodesics::Between(const Eigen::Vector3d& from, const Eig
     hints.assign(2, node_b);
   }
   path.row(path.rows() - 1) = b.transpose();  // the true end instead of the node's site
-  std::vector<TangentPlane> planes;           // unknown until asked for
-  if (options_.polish && (a - b).norm() > 0) {
+  result.length_mm = Polished(&path, &hints, &result);
+  result.points = std::move(path);
+  return result;
+}
+
+double CloudGeodesics::Polished(Eigen::MatrixX3d* path, std::vector<int>* hints,
+                                CloudGeodesicPath* result) const {
+  std::vector<TangentPlane> planes;  // unknown until asked for
+  if (options_.polish && (path->row(0) - path->row(path->rows() - 1)).norm() > 0) {
     const double spacing =
         options_.polish_spacing_mm > 0 ? options_.polish_spacing_mm : 0.5 * grid_.cell_size_mm();
     Piece piece;
-    piece.hints = hints;
-    piece.samples = ResamplePolyline(path, spacing, &piece.hints);
+    piece.hints = *hints;
+    piece.samples = ResamplePolyline(*path, spacing, &piece.hints);
     FillMissingPlanes(grid_, piece.samples, &piece.hints, &piece.planes);
     CurvatureFlowReport report;
     report.converged = true;
-    result.polish_rejected =
+    result->polish_rejected =
         !PolishPiece(options_.polish_flow, grid_, options_.polish_splits, &piece, &report);
-    result.polish_converged = report.converged;
-    result.polish_iterations = report.iterations;
-    path = std::move(piece.samples);
-    hints = std::move(piece.hints);
+    result->polish_converged = report.converged;
+    result->polish_iterations = report.iterations;
+    *path = std::move(piece.samples);
+    *hints = std::move(piece.hints);
     planes = std::move(piece.planes);
   }
-  FillMissingPlanes(grid_, path, &hints, &planes);
-  result.length_mm = SurfaceCurveLength(path, planes);
-  result.points = std::move(path);
-  return result;
+  FillMissingPlanes(grid_, *path, hints, &planes);
+  return SurfaceCurveLength(*path, planes);
 }
 
 }  // namespace bespoke
