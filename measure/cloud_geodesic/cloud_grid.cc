@@ -51,6 +51,30 @@ std::optional<Eigen::MatrixX3d> UnitNormals(const Eigen::MatrixX3d& normals, Eig
   return unit;
 }
 
+// A plane through the rows of `around` (#K x 3, mm, nearest first; squared
+// distances `d2`, mm^2) within `reach_mm`, or all of them when fewer than 3
+// lie that near. Where those lie along a line - one column of a sparse
+// scanner's samples, its neighbour columns farther than the reach, as on a
+// throat seen at a grazing angle - the line fixes no plane (any one through
+// it fits, and a wrong one cuts the node off from the skin beside it), so
+// the nearest rows are taken until they span one: their second principal
+// spread at least kMinBreadth of the first (variances; a line with 1 mm of
+// noise along 20 mm gives 0.03, a patch of skin about 1).
+LocalSurface CloseSeed(const Eigen::MatrixX3d& around, const std::vector<double>& d2,
+                       double reach_mm) {
+  constexpr double kMinBreadth = 0.1;
+  Eigen::Index k = 0;
+  while (k < static_cast<Eigen::Index>(d2.size()) &&
+         d2[static_cast<size_t>(k)] <= reach_mm * reach_mm)
+    ++k;
+  if (k < 3) return PcaPlane(around);
+  for (;; k = std::min(around.rows(), k + std::max<Eigen::Index>(1, k / 8))) {
+    double breadth = 0;
+    const LocalSurface seed = PcaPlane(around.topRows(k), nullptr, &breadth);
+    if (breadth >= kMinBreadth || k == around.rows()) return seed;
+  }
+}
+
 }  // namespace
 
 CloudGrid::CloudGrid(const CloudGridOptions& options, const Eigen::MatrixX3d& points,
@@ -174,13 +198,7 @@ void CloudGrid::FitNodes(const CloudGridOptions& options, const Eigen::MatrixX3d
     double planarity = 1;
     LocalSurface seed;
     if (own.rows() >= std::max(5, options.min_seed_points)) seed = PcaPlane(own, &planarity);
-    if (planarity > 0.3) {
-      const double reach = std::max(gap_, cell_);
-      std::vector<Eigen::Index> close;
-      for (size_t i = 0; i < near.size(); ++i)
-        if (d2[i] <= reach * reach) close.push_back(static_cast<Eigen::Index>(i));
-      seed = close.size() >= 3 ? PcaPlane(around(close, Eigen::all)) : PcaPlane(around);
-    }
+    if (planarity > 0.3) seed = CloseSeed(around, d2, std::max(gap_, cell_));
     surfaces_[node] = FitLocalSurface(options.fit, around, seed, 0.5 * gap_);
     // Local sample spacing: d points cover about pi r^2 around the node.
     local_spacing_[node] =

@@ -34,7 +34,7 @@ double LocalSurface::Offset(const Eigen::Vector3d& x) const {
   return local.z() - Height(coefficients, local.x(), local.y());
 }
 
-LocalSurface PcaPlane(const Eigen::MatrixX3d& points, double* planarity) {
+LocalSurface PcaPlane(const Eigen::MatrixX3d& points, double* planarity, double* breadth) {
   BESPOKE_CHECK(points.rows() >= 1, "PCA of no points");
   LocalSurface s;
   s.origin = points.colwise().mean().transpose();
@@ -46,6 +46,7 @@ LocalSurface PcaPlane(const Eigen::MatrixX3d& points, double* planarity) {
   s.frame.col(1) = eigen.eigenvectors().col(1);
   s.frame.col(2) = s.frame.col(0).cross(s.frame.col(1)).normalized();
   if (planarity) *planarity = values[1] > 0 ? std::max(0.0, values[0]) / values[1] : 1.0;
+  if (breadth) *breadth = values[2] > 0 ? std::max(0.0, values[1]) / values[2] : 0.0;
   return s;
 }
 

@@ -40,8 +40,11 @@ struct LocalSurface {
 
 // The PCA frame of `points` (#K x 3, K >= 1): origin = centroid, columns of
 // the frame ordered by decreasing variance (column 2 = normal). `planarity`
-// (optional) gets lambda_min / lambda_mid (0 for a perfect plane, 1 isotropic).
-LocalSurface PcaPlane(const Eigen::MatrixX3d& points, double* planarity = nullptr);
+// (optional) gets lambda_min / lambda_mid (0 for a perfect plane, 1 isotropic);
+// `breadth` (optional) lambda_mid / lambda_max (0 for points on a line, whose
+// normal is any direction across it).
+LocalSurface PcaPlane(const Eigen::MatrixX3d& points, double* planarity = nullptr,
+                      double* breadth = nullptr);
 
 // Fits `fit` to `points` (#K x 3, K >= 3, mm). Rows whose distance from the
 // plane `seed` exceeds `inlier_offset_mm` (> 0) are ignored: they belong to
