@@ -123,17 +123,14 @@ class CloudGeodesics {
                                        int node_a, int node_b, double snap_a, double snap_b,
                                        bool hole_a, bool hole_b);
   bool InUnscannedRegion(const Eigen::Vector3d& x, double distance, int node) const;
-  // The way from `start` (on the surface, in `node`) to the rim round `x`
-  // (in a hole, `distance` mm from the scan, its nearest point in `x_node`):
-  // the best rim node by propagated distance plus chord, its path flowed
-  // (Polished), then the chord; length_mm +inf when no rim node is reached.
+  // From `start` (on the surface, in `node`) to the best rim node round `x`
+  // (in a hole, `distance` mm off, nearest point in `x_node`) by propagated
+  // distance plus chord, flowed (Polished), then the chord; +inf if none.
   CloudGeodesicPath FromScannedEnd(const Eigen::Vector3d& start, int node, const Eigen::Vector3d& x,
                                    double distance, int x_node);
-  // Flows `path` (#S x 3, mm, on the surface; `hints` its #S grid nodes)
-  // into a locally shortest path with its end samples held, when
-  // options_.polish; the polish fields of `result` say how it went. Returns
-  // its length over the surface (mm); `path` and `hints` become the flowed
-  // samples.
+  // Flows `path` (#S x 3, mm; `hints` its #S grid nodes) into a locally
+  // shortest path, ends held, when options_.polish (`result`'s polish fields
+  // say how); returns its length over the surface (mm).
   double Polished(Eigen::MatrixX3d* path, std::vector<int>* hints, CloudGeodesicPath* result) const;
   void SweepPoints(const Eigen::Vector3d& point, const std::vector<int>& rim_nodes);
   static std::string FormatPoint(const Eigen::Vector3d& x);  // "(x, y, z)", mm
