@@ -122,8 +122,8 @@ TEST(BodyGeodesics, DatumPointLengthsOnAVirtualScanMatchExactMeshGeodesics) {
 // the path from it to the front waist is bridged, not refused; within 10 mm
 // of the exact geodesic (what docs/measuring.md holds a length from a datum
 // point in a scan hole to, the inside leg's). The way from the rim-seeded
-// wavefront alone is 11.1 mm long on seed 1 (a kink that no flow removes);
-// the way from the front waist is kept there.
+// wavefront alone is 11.1 mm too long on seed 1 (a kink that no flow
+// removes); the way from the front waist is kept there.
 TEST(BodyGeodesics, TheCrotchInASparseHoleIsReachedOnEveryScan) {
   const Body body = CoarseWoman();
   const SurfacePoint& crotch = body.landmarks.at("crotch");
