@@ -197,6 +197,7 @@ Measurement Girth(const MeasureOptions& o, const MeasurementDef& m, const PointC
     anchors.row(static_cast<Eigen::Index>(i)) = Position(set, m.datum[i]);
   SectionMembers members = Members(m, cloud, parts, anchors);
   if (m.arms == "lower") KeepBetweenDatums(m, set, cloud, anchors, &members);
+  members.skin_over_holes = !IsTrunkGirth(m) && m.arms.empty();
   if (!m.narrowest_up_to.empty()) {
     point.z() = NarrowestSectionZ(o.section, cloud.points, cloud.normals, point.z(),
                                   Position(set, m.narrowest_up_to).z(), o.narrowest_step_mm,

@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "measure/measurements/section_holes.h"
 #include "measure/tape/convex_hull_2d.h"
 #include "scanners/core/cell_key.h"
 #include "scanners/core/errors.h"
@@ -458,6 +459,14 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
   out.open = out.largest_gap_mm > options.open_gap_mm;
   std::vector<Vec2> outline =
       options.smooth_arc_mm > 0 ? Denoise(part, centre, options.smooth_arc_mm) : part;
+  if (members.skin_over_holes && out.open) {
+    SkinOverHolesOptions holes;
+    holes.open_gap_mm = options.open_gap_mm;
+    const SkinOverHoles fill = FillSectionHoles(holes, ToMatrix(part));
+    for (Eigen::Index k = 0; k < fill.points.rows(); ++k)
+      outline.push_back(fill.points.row(k).transpose());
+    out.bridged_mm = fill.bridged_mm;
+  }
   for (Eigen::Index t = 0; t < members.tape_points.rows(); ++t) {
     const Vec2 q = frame.To2d(members.tape_points.row(t).transpose());
     if (GapAround(part, centre, q) > options.open_gap_mm) outline.push_back(q);

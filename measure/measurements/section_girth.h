@@ -32,7 +32,10 @@
 //                of each of `members.tape_points` that lies in a hole of the
 //                loop (its angular neighbours in the part farther apart than
 //                open_gap_mm; where the skin is scanned, the skin decides).
-//                The tape bridges concavities and holes alike. Optional
+//                The tape bridges concavities and holes alike; across the
+//                holes of a limb's loop (`members.skin_over_holes`) it
+//                passes over the skin the loop's fitted ellipse continues
+//                with (section_holes.h), not the chord. Optional
 //                denoising first: the mean of the points in angular bins of
 //                smooth_arc_mm of arc, so range noise does not push the hull
 //                outwards.
@@ -90,6 +93,9 @@ struct SectionMembers {
   // under a chest's tape, where a booth leaves the trunk's sides unscanned.
   // Empty: none.
   Eigen::MatrixX3d tape_points;
+  // A limb's section: the tape passes over its holes on the skin the
+  // scanned loop continues with (step 5), not on the chord.
+  bool skin_over_holes = false;
 };
 
 struct SectionGirth {
@@ -101,6 +107,7 @@ struct SectionGirth {
   int pieces_joined = 0;         // pieces joined to the seed across holes
   int gap_points_joined = 0;     // members.gap_only points joined (step 4)
   double largest_gap_mm = 0;     // widest gap between angular neighbours of the part
+  double bridged_mm = 0;         // skin laid over the holes (members.skin_over_holes), mm
   bool open = false;             // largest_gap_mm > open_gap_mm
   bool anchor_enclosed = false;  // the seed was chosen by enclosing the anchors' centroid
 };

@@ -127,6 +127,28 @@ TEST(SectionGirth, HoleSplittingTheLoopIsBridged) {
   EXPECT_GT(g.largest_gap_mm, 45);
 }
 
+// An upper arm (an elliptic prism 48 x 38 mm, 1 mm noise) whose inner side
+// the booth did not see (110 deg of its loop): as a limb's section, the tape
+// passes over the skin round the hole, not across its chord, which falls
+// more than 5 mm short; a trunk's section (the flag off) keeps the chord.
+TEST(SectionGirth, ALimbsTapeFollowsItsSkinOverAHole) {
+  std::vector<Eigen::Vector3d> cloud;
+  const Prism arm = Ellipse(48, 38, 250);
+  auto keep = [](double t) { return t < 2.2 || t > 4.1; };
+  Sample(arm, 2, keep, 1.0, &cloud);
+  const Eigen::RowVector3d anchor(298, 0, 100);
+  SectionMembers limb;
+  limb.skin_over_holes = true;
+  const SectionGirth skin =
+      MeasureSectionGirth({}, ToMatrix(cloud), ToMatrix(g_normals), kPlane, kUp, anchor, limb);
+  const SectionGirth chord = Girth(cloud, anchor);
+  EXPECT_TRUE(skin.open);
+  EXPECT_GT(skin.bridged_mm, 60.0);  // mm: the hole's arc is 76 mm
+  EXPECT_EQ(chord.bridged_mm, 0.0);
+  EXPECT_LT(chord.girth_mm, arm.perimeter_mm - 5.0) << "mm";
+  EXPECT_NEAR(skin.girth_mm, arm.perimeter_mm, 1.5) << "mm";
+}
+
 // The trunk's sides under the arms unscanned (50-degree holes on either
 // side): the tape still passes over the armpits, given as tape points off
 // the plane (5 mm below and above it), and spans each hole with two chords
