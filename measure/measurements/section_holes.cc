@@ -7,12 +7,11 @@
 #include <vector>
 
 #include "measure/tape/ellipse_fit.h"
+#include "scanners/core/constants.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
 namespace {
-
-constexpr double kTwoPi = 6.283185307179586;
 
 // RMS of the points' radial distance to the ellipse over their mean radius.
 double ResidualShare(const Ellipse2d& e, const Eigen::MatrixX2d& loop) {
@@ -68,13 +67,13 @@ SkinOverHoles FillSectionHoles(const SkinOverHolesOptions& options, const Eigen:
     order.emplace_back(e->ParameterOf(loop.row(i).transpose()), i);
   std::sort(order.begin(), order.end());
   std::vector<Eigen::Vector2d> fill;
-  const double max_dt = options.max_hole_deg * kTwoPi / 360;
+  const double max_dt = options.max_hole_deg * (2 * kPi) / 360;
   for (std::size_t k = 0; k < order.size(); ++k) {
     const auto& [ta, ia] = order[k];
     const auto& [tb, ib] = order[(k + 1) % order.size()];
     const Eigen::Vector2d a = loop.row(ia).transpose(), b = loop.row(ib).transpose();
     if ((b - a).norm() <= options.open_gap_mm) continue;
-    const double dt = k + 1 < order.size() ? tb - ta : tb + kTwoPi - ta;
+    const double dt = k + 1 < order.size() ? tb - ta : tb + (2 * kPi) - ta;
     if (!(dt > 0) || dt > max_dt) continue;
     out.bridged_mm += Bridge(options, *e, a, ta, b, dt, &fill);
     ++out.holes;

@@ -26,12 +26,12 @@
 namespace bespoke {
 
 struct SkinOverHolesOptions {
-  double open_gap_mm = 30.0;          // default 30 mm: a wider gap between neighbours is a hole
-  double step_mm = 3.0;               // default 3 mm: spacing of the points laid over a hole
-  double max_hole_deg = 150.0;        // default 150 deg: wider holes are left to the chord
-  double max_residual_share = 0.1;    // default 0.1: the ellipse's RMS radial misfit / radius
-  int min_points = 12;                // default 12: fewer scanned points fix no ellipse
-  void Check() const;                 // InputError when out of range
+  double open_gap_mm = 30.0;        // default 30 mm: a wider gap between neighbours is a hole
+  double step_mm = 3.0;             // default 3 mm: spacing of the points laid over a hole
+  double max_hole_deg = 150.0;      // default 150 deg: wider holes are left to the chord
+  double max_residual_share = 0.1;  // default 0.1: the ellipse's RMS radial misfit / radius
+  int min_points = 12;              // default 12: fewer scanned points fix no ellipse
+  void Check() const;               // InputError when out of range
 };
 
 struct SkinOverHoles {

@@ -11,15 +11,11 @@
 namespace bespoke {
 namespace {
 
-// Perimeter of the ellipse with semi-axes a, b (midpoint rule, 1e5 steps).
+// Perimeter of the ellipse with semi-axes a, b: Ramanujan's second
+// approximation, exact to far below a micrometre for an arm's 48 x 40 mm.
 double EllipsePerimeter(double a, double b) {
-  const int steps = 100'000;
-  double sum = 0;
-  for (int i = 0; i < steps; ++i) {
-    const double t = 2 * M_PI * (i + 0.5) / steps;
-    sum += std::hypot(a * std::sin(t), b * std::cos(t));
-  }
-  return sum * 2 * M_PI / steps;
+  const double h = (a - b) * (a - b) / ((a + b) * (a + b));
+  return M_PI * (a + b) * (1 + 3 * h / (10 + std::sqrt(4 - 3 * h)));
 }
 
 // An upper arm's section (semi-axes 48 x 40 mm, turned 0.4 rad, centred at

@@ -6,6 +6,8 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "scanners/core/constants.h"
+
 namespace bespoke {
 
 Eigen::Vector2d Ellipse2d::At(double t) const {
@@ -41,7 +43,7 @@ std::optional<Ellipse2d> FitEllipse(const Eigen::MatrixX2d& points) {
     return std::nullopt;  // degenerate input (OpenCV asserts on it)
   }
   Ellipse2d out;
-  const double angle_rad = rect.angle * M_PI / 180.0;
+  const double angle_rad = rect.angle * kPi / 180.0;
   out.centre = Eigen::Vector2d(rect.center.x + mean.x(), rect.center.y + mean.y());
   out.axis_u = Eigen::Vector2d(std::cos(angle_rad), std::sin(angle_rad));
   out.semi_axis_u_mm = rect.size.width / 2.0;

@@ -18,9 +18,9 @@
 namespace bespoke {
 
 struct Ellipse2d {
-  Eigen::Vector2d centre = Eigen::Vector2d::Zero();  // mm
-  double semi_axis_u_mm = 0;                         // semi-axis along `axis_u`
-  double semi_axis_v_mm = 0;                         // semi-axis along `axis_u` turned +90 deg
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();   // mm
+  double semi_axis_u_mm = 0;                          // semi-axis along `axis_u`
+  double semi_axis_v_mm = 0;                          // semi-axis along `axis_u` turned +90 deg
   Eigen::Vector2d axis_u = Eigen::Vector2d::UnitX();  // unit direction of the first axis
 
   // The point at parameter t (radians): centre + a cos t u + b sin t v.
