@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "measure/measurements/geodesic_paths.h"
+#include "measure/measurements/narrowest_section.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {

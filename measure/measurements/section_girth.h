@@ -131,18 +131,6 @@ SectionGirth MeasureSectionGirth(const SectionGirthOptions& options, const Eigen
                                  const Eigen::MatrixX3d& anchors,
                                  const SectionMembers& members = {});
 
-// The height (mm) in [z_from, z_to] of the smallest horizontal section: the
-// part's girth every step_mm (each with the anchors moved to that height),
-// the median of `window` neighbouring levels so that one noisy or broken
-// section (a sliver the anchor picks between two holes) does not decide,
-// and the level of the smallest median. z_from when no level cuts the cloud
-// or z_to <= z_from. Arguments as MeasureSectionGirth (members.one_part is
-// not used: each level's part is the seed's loop with its arcs).
-double NarrowestSectionZ(const SectionGirthOptions& options, const Eigen::MatrixX3d& cloud,
-                         const Eigen::MatrixX3d& normals, double z_from, double z_to,
-                         double step_mm, int window, const Eigen::MatrixX3d& anchors,
-                         const SectionMembers& members = {});
-
 }  // namespace bespoke
 
 #endif  // BESPOKE_MEASURE_MEASUREMENTS_SECTION_GIRTH_H_

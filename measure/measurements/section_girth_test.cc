@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "measure/measurements/narrowest_section.h"
 #include "scanners/core/errors.h"
 
 namespace bespoke {
