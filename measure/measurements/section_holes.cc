@@ -18,8 +18,8 @@ double ResidualShare(const Ellipse2d& e, const Eigen::MatrixX2d& loop) {
   double sum2 = 0, radius = 0;
   for (Eigen::Index i = 0; i < loop.rows(); ++i) {
     const Eigen::Vector2d p = loop.row(i).transpose();
-    const double r = (p - e.centre).norm();
-    sum2 += (r - e.RadiusToward(p)) * (r - e.RadiusToward(p));
+    const double r = (p - e.centre).norm(), off = r - e.RadiusToward(p);
+    sum2 += off * off;
     radius += r;
   }
   const double n = static_cast<double>(loop.rows());
