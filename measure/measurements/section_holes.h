@@ -4,12 +4,11 @@
 // A booth leaves the inner side of an arm or a thigh unscanned (the trunk or
 // the other thigh hides it). The convex hull bridges such a hole with its
 // chord, but a limb's section is convex there too, so the tape runs outside
-// the chord: at the true datum points the MakeHuman population's upper arm
-// girths read 1-6 mm short on every open section (`bespoke accuracy
-// --truth-landmarks`, docs/accuracy.md). This fits an ellipse to the scanned
-// loop (ellipse_fit.h) and, across each hole, follows it from one end of the
-// hole to the other, blended so that it starts and ends on the scanned
-// points: q(s) = E(t(s)) + (1 - s) (A - E(tA)) + s (B - E(tB)), s in [0, 1].
+// the chord (upper-arm girths 1-6 mm short at the true datum points of the
+// MakeHuman population; docs/measuring.md, step 5). This fits an ellipse to
+// the scanned loop (ellipse_fit.h) and, across each hole, follows it from
+// one end of the hole to the other, blended so that it starts and ends on
+// the scanned points: q(s) = E(t(s)) + (1 - s) (A - E(tA)) + s (B - E(tB)), s in [0, 1].
 //
 // It does nothing when the loop is whole, when the ellipse does not fit the
 // scanned points (their RMS radial residual above max_residual_share of the
