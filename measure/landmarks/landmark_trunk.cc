@@ -30,6 +30,34 @@ double CrotchLevelFromSlices(const Context& c, double h) {
   return -1;
 }
 
+// The hip (seat) level: the most backward point of the buttocks between
+// the crotch and `top` (mm). The buttocks' back is flat in height over a
+// few centimetres, so the single most backward point jumps with the noise
+// between scans of one body; the back profile (per 5 mm slice the mean y
+// of the trunk's five most backward points, |x| < 150 mm) is smooth, and
+// the vertex of its parabola round the most backward slice
+// (profile_extreme.h) is the level. Throws InputError when no slice there
+// has points.
+double HipLevel(const Context& c, double top) {
+  std::vector<double> at, back;
+  for (int s = SliceAt(c.slices, c.crotch_z); s <= SliceAt(c.slices, top); ++s) {
+    const Slice& slice = c.slices[static_cast<size_t>(s)];
+    std::vector<double> y;
+    for (int r : c.TrunkRows(slice, 150))
+      if (std::abs(c.points(r, 0)) < 150) y.push_back(c.points(r, 1));
+    at.push_back(slice.z);
+    if (y.size() < 5) {
+      back.push_back(kNaN);
+      continue;
+    }
+    std::partial_sort(y.begin(), y.begin() + 5, y.end());
+    back.push_back((y[0] + y[1] + y[2] + y[3] + y[4]) / 5);
+  }
+  const size_t best = BestSample({}, back, std::vector<bool>(back.size(), true));
+  if (best == back.size()) throw InputError("landmarks: no buttocks found above the crotch");
+  return ProfileExtreme({}, at, back, best);
+}
+
 // The crotch on the mid-sagittal profile: the trunk's lowest point in 5 mm
 // bins of y (|x| < 6 mm, from 60 mm below `level` to 80 mm above) is a
 // U rising to the pubis in front and the buttocks behind; the vertex of a
@@ -375,15 +403,7 @@ void FindTrunkLevels(Context* c) {
   // stature above the crotch (an under-bust found low on a big belly).
   const double top =
       std::max(under_z > 0 ? under_z - 0.1 * h : c->crotch_z + 0.15 * h, c->crotch_z + 0.1 * h);
-  std::vector<int> behind;
-  for (int s = SliceAt(c->slices, c->crotch_z); s <= SliceAt(c->slices, top); ++s) {
-    for (int r : c->TrunkRows(c->slices[static_cast<size_t>(s)], 150)) {
-      if (std::abs(c->points(r, 0)) < 150) behind.push_back(r);
-    }
-  }
-  const int buttock = c->SmoothExtreme(behind, -Eigen::Vector3d::UnitY(), 15, 5);
-  if (buttock < 0) throw InputError("landmarks: no buttocks found above the crotch");
-  const double hip_z = c->points(buttock, 2);
+  const double hip_z = HipLevel(*c, top);
   // Waist: the natural waist, the smallest convex-hull girth of the trunk
   // between the iliac crest and the lowest rib, placed at 30 % and 85 % of
   // the hip-to-under-bust height (the oracle's truth uses the same band).
