@@ -241,6 +241,24 @@ SurfacePoint HighestVertex(const TriangleMesh& mesh) {
   throw InternalError("makehuman: the highest vertex is not used by a face");
 }
 
+// The bone-carried datum points (MakeHumanBoneCarriedLandmarks) of a posed
+// body: each point's rest position (`rest_mesh`, body frame before posing)
+// moved by its bone, then the posed skin's closest point. Returns the
+// largest distance from a moved point to the skin (mm).
+double CarryBonyLandmarks(const MakeHumanRig& rig, const PoseResult& pose,
+                          const TriangleMesh& rest_mesh, Body* body) {
+  const std::map<std::string, SurfacePoint> rest = MakeHumanLandmarkPoints(rest_mesh);
+  double largest_mm = 0;
+  for (const BoneCarriedLandmark& l : MakeHumanBoneCarriedLandmarks()) {
+    const Eigen::Affine3d& g = pose.bone_from_rest.at(static_cast<size_t>(rig.BoneIndex(l.bone)));
+    const Eigen::Vector3d moved = g * PositionOf(rest_mesh, rest.at(l.name));
+    const SurfacePoint on_skin = ClosestSurfacePoint(body->mesh, moved);
+    largest_mm = std::max(largest_mm, (PositionOf(body->mesh, on_skin) - moved).norm());
+    body->landmarks[l.name] = on_skin;
+  }
+  return largest_mm;
+}
+
 }  // namespace
 
 Body GenerateMakeHumanBody(const MakeHumanBodyOptions& options, MakeHumanModel* model) {
@@ -258,6 +276,7 @@ Body GenerateMakeHumanBody(const MakeHumanBodyOptions& options, MakeHumanModel* 
   const Eigen::Affine3d body_from_mh = MakeHumanModel::BodyFromMakeHuman();
   TransformInPlace(body_from_mh, &body.mesh);
   PoseResult pose;
+  const TriangleMesh rest_mesh = body.mesh;
   if (!options.posture.empty()) {
     const MakeHumanRig& rig = model->Rig();
     std::map<std::string, Eigen::Vector3d> joints = RigJoints(rig, all);
@@ -267,6 +286,9 @@ Body GenerateMakeHumanBody(const MakeHumanBodyOptions& options, MakeHumanModel* 
   }
   body.limbs = RigLimbs(model->Rig());
   body.landmarks = MakeHumanLandmarkPoints(body.mesh);
+  double bone_carried_off_skin_mm = 0;
+  if (!options.posture.empty())
+    bone_carried_off_skin_mm = CarryBonyLandmarks(model->Rig(), pose, rest_mesh, &body);
   PlaceOnFloorBetweenAnkles(&body);
   body.landmarks["crown"] = HighestVertex(body.mesh);
   DefinedLevels levels;
@@ -303,6 +325,7 @@ Body GenerateMakeHumanBody(const MakeHumanBodyOptions& options, MakeHumanModel* 
     for (const auto& [name, value] : pose.reached) q["pose." + name] = value;
     for (const auto& [name, value] : pose.rest) q["pose.rest_" + name] = value;
     q["pose.new_self_intersections"] = pose.new_self_intersections;
+    q["pose.bone_carried_off_skin_mm"] = bone_carried_off_skin_mm;
     q["pose.arms_stopped_at_contact"] = pose.arms_stopped ? 1 : 0;
     q["pose.legs_stopped_at_contact"] = pose.legs_stopped ? 1 : 0;
   }

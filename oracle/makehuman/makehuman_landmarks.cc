@@ -97,6 +97,15 @@ const std::vector<MakeHumanLandmark>& MakeHumanLandmarkTable() {
   return table;
 }
 
+const std::vector<BoneCarriedLandmark>& MakeHumanBoneCarriedLandmarks() {
+  // The acromion is the shoulder blade's (bone shoulder01); its skin vertex
+  // 1608 weighs upperarm01 0.80, upperarm02 0.07, shoulder01 0.08, clavicle
+  // 0.05 in default_weights.mhw.
+  static const std::vector<BoneCarriedLandmark> table = {{"shoulder_right", "shoulder01.R"},
+                                                         {"shoulder_left", "shoulder01.L"}};
+  return table;
+}
+
 std::map<std::string, SurfacePoint> MakeHumanLandmarkPoints(const TriangleMesh& mesh) {
   // One face per vertex: the first face that uses it.
   std::vector<int> face_of(static_cast<std::size_t>(mesh.num_vertices()), -1);

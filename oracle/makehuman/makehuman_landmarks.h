@@ -32,6 +32,17 @@ struct MakeHumanLandmark {
 // Every landmark of the catalogue's canonical list, both sides.
 const std::vector<MakeHumanLandmark>& MakeHumanLandmarkTable();
 
+// Bony datum points whose skin vertex takes most of its weight from another
+// bone's (the acromion's vertex lies on the shoulder cap, 80 % upper arm):
+// linear blend skinning would carry them with the arm, while the bone they
+// belong to (the shoulder blade) stays. A posed body carries each of them
+// rigidly with its own bone and puts it on the posed skin's closest point.
+struct BoneCarriedLandmark {
+  const char* name;  // catalogue name
+  const char* bone;  // MakeHuman default skeleton bone
+};
+const std::vector<BoneCarriedLandmark>& MakeHumanBoneCarriedLandmarks();
+
 // The landmarks as surface points of a body mesh with the skin's topology
 // (any morph of base_body(), in any frame). InternalError when the mesh has
 // fewer vertices than the table refers to.

@@ -370,6 +370,7 @@ PoseResult PoseMakeHumanSkin(const MakeHumanRig& rig, const TriangleMesh& skin,
       rotations[rig.BoneIndex(neck)] = Turn(posture.head_turn_deg / 4, Eigen::Vector3d::UnitZ());
   result.vertices = SkinWithRotations(rig, skin.vertices, joints, rotations);
   const std::vector<Eigen::Affine3d> g = chain.Globals(rotations);
+  result.bone_from_rest = g;
   result.reached["arm_abduction_deg"] = arm_angle(g);
   result.reached["stance_mm"] = stance(g);
   result.reached["lean_deg"] = posture.lean_deg;

@@ -103,6 +103,9 @@ struct PoseResult {
   std::map<std::string, double> rest;     // the same quantities in the rest pose
   int new_self_intersections = 0;         // face pairs crossing that did not at rest
   bool arms_stopped = false, legs_stopped = false;  // stopped at contact before the target
+  // Per rig bone (MakeHumanRig::bones order), its rest-to-posed transform in
+  // the input's frame (G_b above): a point fixed to the bone moves by it.
+  std::vector<Eigen::Affine3d> bone_from_rest;
 };
 
 // Poses a skin.

@@ -11,6 +11,7 @@
 
 #include "measure/catalogue/catalogue.h"
 #include "oracle/makehuman/makehuman_body.h"
+#include "oracle/makehuman/makehuman_landmarks.h"
 #include "oracle/makehuman/makehuman_model.h"
 #include "oracle/makehuman/makehuman_population.h"
 #include "oracle/truth/mesh_section.h"
@@ -102,6 +103,32 @@ TEST(MakeHumanPose, ArmsReachTheirAngleAndTheDatumPointsFollow) {
   for (const char* name : {"crotch", "knee_right", "ankle_inside_left"})
     EXPECT_LT((At(t, name) - At(rest, name)).norm(), 1.0) << name;
   EXPECT_EQ(t.parameters.at("pose.new_self_intersections"), 0);
+}
+
+// The acromion belongs to the shoulder blade, but its skin vertex weighs
+// mostly the upper arm: lowering the arms from MakeHuman's rest (44 deg) to
+// 30 deg carries that vertex down and out with the arm, while the datum point
+// is carried by the shoulder blade's bone and stays; a lean moves both alike.
+TEST(MakeHumanPose, TheAcromionStaysWithTheShoulderBlade) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(MakeHumanDir(shared));
+  int vertex = -1;
+  for (const MakeHumanLandmark& l : MakeHumanLandmarkTable())
+    if (std::string(l.name) == "shoulder_right") vertex = l.vertex;
+  ASSERT_GE(vertex, 0);
+  const Body rest = Posed(&model, 1001, "rest", "full");
+  const Body a = Posed(&model, 1001, "arms-30", "full");
+  const auto moved = [&](const Body& b) {
+    return (At(b, "shoulder_right") - At(rest, "shoulder_right")).norm();
+  };
+  const double skin_moved = (a.mesh.vertices.row(vertex) - rest.mesh.vertices.row(vertex)).norm();
+  std::printf("arms-30: skin vertex moved %.1f mm, acromion %.1f mm\n", skin_moved, moved(a));
+  EXPECT_GT(skin_moved, 8);
+  EXPECT_LT(moved(a), 3);
+  EXPECT_LT(a.parameters.at("pose.bone_carried_off_skin_mm"), 3);
+  const Body lean = Posed(&model, 1001, "lean-5", "full");
+  EXPECT_GT(moved(lean), 20);
+  EXPECT_LT(lean.parameters.at("pose.bone_carried_off_skin_mm"), 1);
 }
 
 TEST(MakeHumanPose, ArmsPressedToTheSidesStopAtContact) {
