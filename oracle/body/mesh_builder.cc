@@ -21,6 +21,11 @@ int MeshBuilder::Add(const Eigen::Vector3d& position) {
   return static_cast<int>(vertices_.size()) - 1;
 }
 
+void MeshBuilder::Move(int vertex, const Eigen::Vector3d& position) {
+  BESPOKE_CHECK(position.allFinite(), "mesh builder: vertex not finite");
+  vertices_.at(static_cast<size_t>(vertex)) = position;
+}
+
 std::vector<int> MeshBuilder::AddRing(const std::vector<Eigen::Vector3d>& positions) {
   std::vector<int> ring;
   ring.reserve(positions.size());

@@ -22,6 +22,9 @@ class MeshBuilder {
   const Eigen::Vector3d& position(int vertex) const {
     return vertices_[static_cast<size_t>(vertex)];
   }
+  // Moves an existing vertex (faces unchanged). InternalError when the
+  // position is not finite.
+  void Move(int vertex, const Eigen::Vector3d& position);
   int num_vertices() const { return static_cast<int>(vertices_.size()); }
   size_t num_faces() const { return faces_.size(); }
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "measure/tape/convex_hull_2d.h"
 #include "oracle/body/mesh_checks.h"
 #include "oracle/body/parametric_build.h"
 #include "scanners/core/constants.h"
@@ -335,17 +336,6 @@ void AddTorsoLandmarksAndGirths(Build* b) {
   // girth plane through them is the full armpit ring).
   lm["axilla_front_right"] = at(L.z_armpit, b->h);
   lm["axilla_back_right"] = at(L.z_armpit, -b->h);
-  // Bust point: the end of the flat front of the bust section, i.e. the ring
-  // vertex of the right front quadrant on the flat part closest to x = w.
-  const Section bust = InterpolateSection(L.torso, L.z_bust);
-  int best = -1;
-  for (int j = 0; j <= q; ++j) {
-    const int v = at(L.z_bust, j);
-    const double x = b->mesh.position(v).x();
-    if (x <= bust.front.w + 1e-9 && (best < 0 || x > b->mesh.position(best).x())) best = v;
-  }
-  BESPOKE_CHECK(best >= 0, "parametric body: no bust point");
-  lm["bust_right"] = best;
   lm["under_bust"] = at(L.z_under_bust, q);
   lm["front_waist"] = at(L.z_waist, q);
   lm["back_waist"] = at(L.z_waist, 3 * q);
@@ -383,9 +373,15 @@ AnalyticGirth MakeGirth(const parametric::GirthRing& g, const TriangleMesh& mesh
   out.plane_point = point;
   out.plane_normal = normal;
   out.girth_mm = g.section.Perimeter();
-  std::vector<Eigen::Vector3d> pts;
-  for (int v : ring) pts.push_back(mesh.vertices.row(v).transpose());
-  out.polygon_girth_mm = PolygonPerimeter(pts);
+  // The tape round the ring: its convex hull in the plane (the ring itself
+  // where it is convex; the bust's dips into the cleavage).
+  const Eigen::Vector3d u = normal.unitOrthogonal(), w = normal.cross(u);
+  Eigen::MatrixX2d in_plane(static_cast<Eigen::Index>(ring.size()), 2);
+  for (size_t k = 0; k < ring.size(); ++k) {
+    const Eigen::Vector3d p = mesh.vertices.row(ring[k]).transpose() - point;
+    in_plane.row(static_cast<Eigen::Index>(k)) << p.dot(u), p.dot(w);
+  }
+  out.polygon_girth_mm = ConvexHullPerimeter(in_plane);
   return out;
 }
 
@@ -457,6 +453,7 @@ Body GenerateParametricBody(const ParametricBodyOptions& options, ParametricBody
                                                                             : p;
     }
   }
+  parametric::CarveCleavage(part, &b);
 
   Body body;
   body.model = "parametric";
@@ -474,6 +471,15 @@ Body GenerateParametricBody(const ParametricBodyOptions& options, ParametricBody
     body.landmarks[name] = AtVertex(body.mesh, face_of, vertex);
     const std::string left = LeftName(name);
     if (!left.empty()) body.landmarks[left] = AtVertex(body.mesh, face_of, b.Mirror(vertex));
+  }
+  // The bust points: the ends of the bust section's flat front, where the
+  // skin rising out of the cleavage (CarveCleavage) meets the tape's line;
+  // the exact points, on the ring's edges.
+  const Section bust = InterpolateSection(layout.torso, layout.z_bust);
+  for (const double sign : {1.0, -1.0}) {
+    const Eigen::Vector3d apex(bust.cu + sign * bust.front.w, bust.cv + bust.front.b,
+                               layout.z_bust);
+    body.landmarks[sign > 0 ? "bust_right" : "bust_left"] = ClosestSurfacePoint(body.mesh, apex);
   }
   body.parameters = layout.options.ToMap();
   for (const auto& [name, value] : b.derived) body.parameters[name] = value;

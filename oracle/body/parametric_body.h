@@ -122,7 +122,7 @@ struct AnalyticGirth {
   Eigen::Vector3d plane_point;   // centre of the section, body frame, mm
   Eigen::Vector3d plane_normal;  // unit; +z for horizontal girths, the limb axis for arm girths
   double girth_mm = 0;           // analytic perimeter of the (convex) section curve
-  double polygon_girth_mm = 0;   // perimeter of the mesh's vertex ring (<= girth_mm)
+  double polygon_girth_mm = 0;   // the ring's convex hull perimeter in the plane (<= girth_mm)
   std::vector<int> ring;         // the ring's vertex indices, in order around it
 };
 

@@ -66,6 +66,18 @@ std::vector<double> Subdivide(double from, double to, double spacing, int min_st
 // Faces beside the rings become fans; everything stays closed.
 void RefineGirthRings(Build* b, int min_segments);
 
+// The breasts (parametric_bust.cc): the torso's front between the bust
+// points pressed back into a cleavage. At the bust level the front is flat
+// between the bust points (the tape's line); the skin inside them is moved
+// back by depth * (1 - s^2)^2, s = |x| / w (w: the flat part's half-width
+// at that height), so each bust point is the most forward point of its side
+// and the tape round the bust is unchanged. The depth is a quarter of bust
+// minus under-bust girth (at most 40 % of the bust's front depth), full at
+// the bust level and fading (smoothstep) to nothing at the under-bust level
+// and 60 % of that distance above the bust (at most up to the armpit level). `part`: #V, the
+// torso's vertices are moved, nothing else. Records "cleavage_depth_mm" in derived.
+void CarveCleavage(const std::vector<BodyPart>& part, Build* b);
+
 // Largest horizontal change between two sections (mm): how far a ring
 // moves sideways between them, used to place enough rings.
 double SidewaysChange(const Section& x, const Section& y);

@@ -118,14 +118,16 @@ void AddTorsoKeys(BodyLayout* L) {
   t.push_back({L->z_under_bust, under_bust, "under_bust_girth"});
   const Section chest = Girth(o.chest_girth_mm, 0, -5 * k, {0.62, 2.6, 0.3}, {0.66, 2.8, 0.35});
   // Bust: as wide as between under-bust and chest, the back of the chest,
-  // a flat front between the bust points; the front depth makes the girth.
+  // a flat front between the bust points (the tape's line over the
+  // cleavage, CarveCleavage) rounding off beyond them (exponent 2: a
+  // breast's outer side, not a box's); the front depth makes the girth.
   Section bust;
   bust.cu = 0;
   bust.cv = 5 * k;
   bust.a = 0.5 * (under_bust.a + chest.a) * 1.01;
   bust.back = {0.5 * (under_bust.back.b + chest.back.b), 2.7,
                0.5 * (under_bust.back.w + chest.back.w)};
-  bust.front = {bust.a * 0.7, 2.8, 0.55 * bust.a};
+  bust.front = {bust.a * 0.7, 2.0, 0.55 * bust.a};
   SolveFrontDepth(&bust, o.bust_girth_mm, "bust_girth_mm");
   t.push_back({L->z_bust, bust, "bust_girth"});
   t.push_back({L->z_armpit, chest, "chest_girth"});

@@ -12,7 +12,7 @@
 namespace bespoke {
 namespace {
 
-void CheckRange(const char* name, double value, double lo, double hi) {
+void CheckScanRange(const char* name, double value, double lo, double hi) {
   if (!std::isfinite(value) || value < lo || value > hi) {
     throw InputError(std::string("scan-sim: ") + name + " = " + std::to_string(value) +
                      " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
@@ -173,13 +173,13 @@ std::string ToString(ScanTransform transform) {
 
 void ScanSimOptions::Check() const {
   booth.Check();
-  CheckRange("noise_sigma_mm", noise_sigma_mm, 0, 50);
-  CheckRange("outlier_fraction", outlier_fraction, 0, 0.5);
-  CheckRange("min_incidence_cos", min_incidence_cos, 0, 0.99);
-  CheckRange("floor_half_size_mm", floor_half_size_mm, 100, 5000);
-  CheckRange("stray_objects", stray_objects, 0, 8);
-  CheckRange("misalign_mm", misalign_mm, 0, 100);
-  CheckRange("misalign_deg", misalign_deg, 0, 10);
+  CheckScanRange("noise_sigma_mm", noise_sigma_mm, 0, 50);
+  CheckScanRange("outlier_fraction", outlier_fraction, 0, 0.5);
+  CheckScanRange("min_incidence_cos", min_incidence_cos, 0, 0.99);
+  CheckScanRange("floor_half_size_mm", floor_half_size_mm, 100, 5000);
+  CheckScanRange("stray_objects", stray_objects, 0, 8);
+  CheckScanRange("misalign_mm", misalign_mm, 0, 100);
+  CheckScanRange("misalign_deg", misalign_deg, 0, 10);
 }
 
 ScanSimResult SimulateScan(const ScanSimOptions& o, const TriangleMesh& body, Progress* progress) {

@@ -92,7 +92,7 @@ TEST(DefinedUnderBust, TheAverageWomansFoldIsTheFirstCornerUnderTheBust) {
 TEST(DefinedUnderBust, ABellyThatBendsMoreBelowDoesNotTakeTheFold) {
   const Defined plain = Make(ParametricBodyOptions{});
   ParametricBodyOptions o;
-  o.waist_girth_mm = 1150, o.middle_hip_girth_mm = 1200, o.hip_girth_mm = 1230;
+  o.waist_girth_mm = 1200, o.middle_hip_girth_mm = 1250, o.hip_girth_mm = 1280;
   const Defined belly = Make(o);
   const double fold = belly.levels.under_bust_mm, stature = o.stature_mm;
   double lower_peak = 0;
@@ -118,13 +118,13 @@ TEST(DefinedUnderBust, AFlatChestHasTheNoFoldLevel) {
   EXPECT_NEAR(d.levels.under_bust_mm, bust - 0.04 * stature, 0.5);
 }
 
-// The average woman's bust grown 5 mm at a time from 880 to 925 mm: its fold
-// sharpens from a bend of about 1 mm to about 4 mm (brute force, printed),
+// The average woman's bust grown 5 mm at a time from 845 to 890 mm: its fold
+// sharpens from a bend under 1 mm to over 3 mm (brute force, printed),
 // and the level goes from the flat chest's to the fold's above it without a
 // jump (a single threshold moves it the whole way in one step).
 TEST(DefinedUnderBust, AFoldThatSharpensMovesTheLevelSmoothly) {
   double previous = -1, first_sharpest = 0, last_sharpest = 0;
-  for (double girth = 880; girth <= 925; girth += 5) {
+  for (double girth = 845; girth <= 890; girth += 5) {
     ParametricBodyOptions o;
     o.bust_girth_mm = girth;
     const Defined d = Make(o);
@@ -132,7 +132,7 @@ TEST(DefinedUnderBust, AFoldThatSharpensMovesTheLevelSmoothly) {
     double sharpest = -1e9;
     for (double z = bust - 0.08 * stature; z <= bust - 0.01 * stature; z += 2)
       sharpest = std::max(sharpest, Bend(d.body, z));
-    (girth == 880 ? first_sharpest : last_sharpest) = sharpest;
+    (girth == 845 ? first_sharpest : last_sharpest) = sharpest;
     std::printf("bust girth %.0f mm: sharpest bend %.2f mm, under-bust %.1f mm\n", girth, sharpest,
                 d.levels.under_bust_mm);
     if (previous > 0) {
