@@ -294,7 +294,7 @@ TEST(ParametricLandmarks, ThighsThatTouch) {
 // part of the back). Every arm landmark must be found, within the dense
 // scan's tolerances; the wrist across its forearm only (on this arm, at its
 // end): its station along the parametric body's level forearm is the
-// noise's (docs/landmarks.md, known limits: 41 mm apart over ten dense
+// noise's (docs/landmarks.md, known limits: 34 mm apart over ten dense
 // scans of one body; 45 mm up the forearm on seed 15 here).
 TEST(ParametricLandmarks, SparseScanKeepsBothArms) {
   for (std::uint64_t seed : {2, 13, 15}) {
