@@ -218,11 +218,4 @@ double PolygonPerimeter(const std::vector<Eigen::Vector2d>& points) {
   return sum;
 }
 
-double PolygonPerimeter(const std::vector<Eigen::Vector3d>& points) {
-  double sum = 0;
-  for (size_t i = 0; i < points.size(); ++i)
-    sum += (points[(i + 1) % points.size()] - points[i]).norm();
-  return sum;
-}
-
 }  // namespace bespoke

@@ -55,7 +55,6 @@ Section Lerp(const Section& x, const Section& y, double t);
 
 // Perimeter of the closed polygon through `points` (#P, in order).
 double PolygonPerimeter(const std::vector<Eigen::Vector2d>& points);
-double PolygonPerimeter(const std::vector<Eigen::Vector3d>& points);
 
 // Sampling of any smooth plane curve c(t), t in [t0, t1], by a measure
 // that mixes arc length and curvature: a dense table of chords, inverted by

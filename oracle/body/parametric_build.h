@@ -74,8 +74,9 @@ void RefineGirthRings(Build* b, int min_segments);
 // and the tape round the bust is unchanged. The depth is a quarter of bust
 // minus under-bust girth (at most 40 % of the bust's front depth), full at
 // the bust level and fading (smoothstep) to nothing at the under-bust level
-// and 60 % of that distance above the bust (at most up to the armpit level). `part`: #V, the
-// torso's vertices are moved, nothing else. Records "cleavage_depth_mm" in derived.
+// and 60 % of that distance above the bust (at most up to the armpit level).
+// `part`: #V; only the torso's vertices move. Records "cleavage_depth_mm" in
+// derived.
 void CarveCleavage(const std::vector<BodyPart>& part, Build* b);
 
 // Largest horizontal change between two sections (mm): how far a ring

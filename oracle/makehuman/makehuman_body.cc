@@ -241,17 +241,25 @@ SurfacePoint HighestVertex(const TriangleMesh& mesh) {
   throw InternalError("makehuman: the highest vertex is not used by a face");
 }
 
-// The bone-carried datum points (MakeHumanBoneCarriedLandmarks) of a posed
-// body: each point's rest position (`rest_mesh`, body frame before posing)
-// moved by its bone, then the posed skin's closest point. Returns the
-// largest distance from a moved point to the skin (mm).
+// The rest positions of the bone-carried datum points
+// (MakeHumanBoneCarriedLandmarks): their table vertices on the rest skin.
+std::map<std::string, Eigen::Vector3d> BoneCarriedRestPositions(const TriangleMesh& rest) {
+  std::map<std::string, Eigen::Vector3d> out;
+  for (const BoneCarriedLandmark& l : MakeHumanBoneCarriedLandmarks())
+    for (const MakeHumanLandmark& t : MakeHumanLandmarkTable())
+      if (std::string(t.name) == l.name) out[l.name] = rest.vertices.row(t.vertex).transpose();
+  return out;
+}
+
+// The bone-carried datum points of a posed body: each rest position moved
+// by its bone, then the posed skin's closest point. Returns the largest
+// distance from a moved point to the skin (mm).
 double CarryBonyLandmarks(const MakeHumanRig& rig, const PoseResult& pose,
-                          const TriangleMesh& rest_mesh, Body* body) {
-  const std::map<std::string, SurfacePoint> rest = MakeHumanLandmarkPoints(rest_mesh);
+                          const std::map<std::string, Eigen::Vector3d>& rest, Body* body) {
   double largest_mm = 0;
   for (const BoneCarriedLandmark& l : MakeHumanBoneCarriedLandmarks()) {
     const Eigen::Affine3d& g = pose.bone_from_rest.at(static_cast<size_t>(rig.BoneIndex(l.bone)));
-    const Eigen::Vector3d moved = g * PositionOf(rest_mesh, rest.at(l.name));
+    const Eigen::Vector3d moved = g * rest.at(l.name);
     const SurfacePoint on_skin = ClosestSurfacePoint(body->mesh, moved);
     largest_mm = std::max(largest_mm, (PositionOf(body->mesh, on_skin) - moved).norm());
     body->landmarks[l.name] = on_skin;
@@ -276,11 +284,12 @@ Body GenerateMakeHumanBody(const MakeHumanBodyOptions& options, MakeHumanModel* 
   const Eigen::Affine3d body_from_mh = MakeHumanModel::BodyFromMakeHuman();
   TransformInPlace(body_from_mh, &body.mesh);
   PoseResult pose;
-  const TriangleMesh rest_mesh = body.mesh;
+  std::map<std::string, Eigen::Vector3d> bone_carried_rest;
   if (!options.posture.empty()) {
     const MakeHumanRig& rig = model->Rig();
     std::map<std::string, Eigen::Vector3d> joints = RigJoints(rig, all);
     for (auto& [name, joint] : joints) joint = body_from_mh * joint;
+    bone_carried_rest = BoneCarriedRestPositions(body.mesh);
     pose = PoseMakeHumanSkin(rig, body.mesh, joints, options.posture);
     body.mesh.vertices = pose.vertices;
   }
@@ -288,7 +297,7 @@ Body GenerateMakeHumanBody(const MakeHumanBodyOptions& options, MakeHumanModel* 
   body.landmarks = MakeHumanLandmarkPoints(body.mesh);
   double bone_carried_off_skin_mm = 0;
   if (!options.posture.empty())
-    bone_carried_off_skin_mm = CarryBonyLandmarks(model->Rig(), pose, rest_mesh, &body);
+    bone_carried_off_skin_mm = CarryBonyLandmarks(model->Rig(), pose, bone_carried_rest, &body);
   PlaceOnFloorBetweenAnkles(&body);
   body.landmarks["crown"] = HighestVertex(body.mesh);
   DefinedLevels levels;

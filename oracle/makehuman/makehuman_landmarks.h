@@ -33,7 +33,7 @@ struct MakeHumanLandmark {
 const std::vector<MakeHumanLandmark>& MakeHumanLandmarkTable();
 
 // Bony datum points whose skin vertex takes most of its weight from another
-// bone's (the acromion's vertex lies on the shoulder cap, 80 % upper arm):
+// bone's (the acromion's vertex lies on the shoulder cap, 87 % upper arm):
 // linear blend skinning would carry them with the arm, while the bone they
 // belong to (the shoulder blade) stays. A posed body carries each of them
 // rigidly with its own bone and puts it on the posed skin's closest point.
