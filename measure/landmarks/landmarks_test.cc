@@ -228,6 +228,38 @@ TEST(ParametricLandmarks, TPose) {
   }
 }
 
+// A T-posed arm reaching past the booth's view: beyond it only a sensor or
+// two grazes the forearm and hand (a tenth of the points per mm), and on
+// body 1001 one side's grazed end held enough stray normals to pass as a
+// hand, the wrist read 100 mm up the forearm at the edge of the view. The
+// end is judged where the arm is still seen in full: each wrist is missing
+// with the reason, or where the truth is.
+TEST(ParametricLandmarks, TPosedArmsGrazedPastTheViewAreNotReadAsHands) {
+  ParametricBodyOptions options;
+  options.seed = 1001;
+  options = SeededOptions(options, "default");
+  options.arm_abduction_deg = 90;
+  ParametricBodyDetails details;
+  Body body = GenerateParametricBody(options, &details);
+  PlaceRuleLandmarks(RuleLandmarkOptions{}, options, details, &body);
+  PlaceDefinedLandmarks(DefinedLandmarkOptions{}, {}, &body);
+  testing::ScannedBodyOptions scan_options;  // the default booth's depth images
+  scan_options.scan_seed = 1001;
+  scan_options.width_px = 240, scan_options.height_px = 180;
+  scan_options.random_transform = false;
+  const testing::ScannedBody scan = testing::ScanAndClean(scan_options, body);
+  const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
+  for (const char* name : {"wrist_right", "wrist_left"}) {
+    if (!set.Has(name)) {
+      ASSERT_TRUE(set.missing.count(name)) << name;
+      EXPECT_NE(set.missing.at(name).find("not in the scan"), std::string::npos)
+          << set.missing.at(name);
+      continue;
+    }
+    EXPECT_LE((set.At(name).position_mm - scan.truth.at(name)).norm(), 45.0) << name;
+  }
+}
+
 // A big hole at the right armpit (every point within 40 mm removed, as a
 // badly occluded scan would have): the armpit is still placed, within the
 // hole's size of the truth, from the gap between arm and trunk below it.

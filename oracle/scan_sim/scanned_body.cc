@@ -12,7 +12,7 @@ namespace bespoke::testing {
 ScannedBody ScanAndClean(const ScannedBodyOptions& options, const Body& body) {
   ScanSimOptions sim;
   sim.seed = options.scan_seed;
-  sim.transform = ScanTransform::kRandom;
+  sim.transform = options.random_transform ? ScanTransform::kRandom : ScanTransform::kNone;
   sim.floor = options.floor;
   sim.noise_sigma_mm = options.noise_sigma_mm;
   sim.booth.width_px = options.width_px;

@@ -17,11 +17,12 @@
 namespace bespoke::testing {
 
 struct ScannedBodyOptions {
-  std::uint64_t scan_seed = 1;  // default 1: seed of the booth's noise and pose
-  int width_px = 160;           // default 160: depth image width per sensor
-  int height_px = 120;          // default 120: depth image height per sensor
-  double noise_sigma_mm = 1.0;  // default 1 mm: range noise SD
-  bool floor = true;            // default true: a floor patch under the feet
+  std::uint64_t scan_seed = 1;   // default 1: seed of the booth's noise and pose
+  int width_px = 160;            // default 160: depth image width per sensor
+  int height_px = 120;           // default 120: depth image height per sensor
+  double noise_sigma_mm = 1.0;   // default 1 mm: range noise SD
+  bool floor = true;             // default true: a floor patch under the feet
+  bool random_transform = true;  // default true: the scanner frame a random rigid motion away
 };
 
 struct ScannedBody {
