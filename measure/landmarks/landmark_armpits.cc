@@ -139,10 +139,21 @@ int ArmLeavesTrunk(const std::vector<double>& ext, int bottom, int top, TrunkLik
 // the join.
 constexpr double kRestingArmMinClimbMm = 20;
 
+// A slice without the notch whose dip still reaches this ratio (arm_notch.h;
+// the notch's own is 0.7) is a weakened notch, not its end: on a heavy body
+// whose upper arm rests on the trunk the crease thins for a few slices
+// below the armpit (0.72-0.74 over 15 mm, MakeHuman full seed 2 subject 29,
+// the notch back at 0.56-0.67 up to the true armpit), while above the
+// armpit the shoulder's taper takes the ratio past it within 10-15 mm.
+constexpr double kWeakNotchRatio = 0.8;
+// The longest run of weakened slices the climb bridges, mm.
+constexpr double kMaxWeakRunMm = 20;
+
 // From slice `level`, where the arm's and the trunk's sections join, up
 // while the section (`rows_at(s)`: the trunk's and this arm's points) still
 // shows the arm's notch (arm_notch.h), one slice without it allowed (a thin
-// slice's noise); up to 84 % of stature. Returns the notches of slices
+// slice's noise), or a run of up to kMaxWeakRunMm of weakened ones
+// (kWeakNotchRatio); up to 84 % of stature. Returns the notches of slices
 // level + 1 up to the last with one (a slice without: found = false), or
 // nothing when that climb is shorter than kRestingArmMinClimbMm. An arm
 // resting on the trunk joins its section far below the armpit: the notch's
@@ -150,11 +161,19 @@ constexpr double kRestingArmMinClimbMm = 20;
 template <typename RowsAt>
 std::vector<ArmNotch> ClimbArmNotch(const Context& c, int level, int sign, RowsAt rows_at) {
   const int top = SliceAt(c.slices, 0.84 * c.crown_z);
+  const size_t max_weak = static_cast<size_t>(kMaxWeakRunMm / c.step);
   std::vector<ArmNotch> climb;
   size_t kept = 0;
-  for (int s = level + 1; s <= top && climb.size() < kept + 2; ++s) {
+  bool weak = true;  // every slice since the last notch a weakened one
+  for (int s = level + 1; s <= top; ++s) {
     climb.push_back(FindArmNotch(ArmNotchOptions{}, c.points, rows_at(s), sign));
-    if (climb.back().found) kept = climb.size();
+    if (climb.back().found) {
+      kept = climb.size(), weak = true;
+      continue;
+    }
+    weak = weak && climb.back().ratio <= kWeakNotchRatio;
+    const size_t run = climb.size() - kept;
+    if (run >= 2 && (!weak || run > max_weak)) break;
   }
   climb.resize(kept);
   if (static_cast<double>(kept) * c.step < kRestingArmMinClimbMm) climb.clear();

@@ -708,6 +708,34 @@ TEST(MakeHumanLandmarks, ArmpitAboveArmsRestingOnTheBody) {
   ExpectHeightsWithin(&model, {7002}, "arms-5", {"under_bust", "front_waist"}, 40.0);
 }
 
+// An obese body whose upper arms rest on the trunk well below the armpits
+// (MakeHuman full seed 2030, arms at 30 deg, the default booth): the crease
+// between arm and trunk weakens for 15 mm (the notch's ratio 0.72-0.74,
+// just past its 0.7) and comes back up to the true armpit. Stopping at the
+// weak stretch put both armpits 32-47 mm low, and the chest girth's
+// section, taken there, took in the arms (+114 mm).
+TEST(MakeHumanLandmarks, RestingArmsCreaseClimbsPastAWeakStretch) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(shared / "data/bodies/makehuman");
+  MakeHumanBodyOptions options;
+  options.seed = 2030;
+  options.population = "full";
+  options.posture = ParseMakeHumanPosture("arms-30");
+  testing::ScannedBodyOptions scan_options;  // the accuracy run's scan of it
+  scan_options.scan_seed = 2030;
+  scan_options.width_px = 240, scan_options.height_px = 180;
+  scan_options.random_transform = false;
+  const testing::ScannedBody scan =
+      testing::ScanAndClean(scan_options, GenerateMakeHumanBody(options, &model));
+  const LandmarkSet set = DetectLandmarks(LandmarkOptions{}, scan.cloud);
+  for (const char* name : {"armpit_right", "armpit_left"}) {
+    ASSERT_TRUE(set.Has(name)) << name;
+    const double dz = set.At(name).position_mm.z() - scan.truth.at(name).z();
+    std::printf("%s dz %.1f mm (%s)\n", name, dz, set.At(name).method.c_str());
+    EXPECT_LE(std::abs(dz), 15.0) << name << " (mm)";
+  }
+}
+
 // A T-posed arm is no arm resting on the trunk: the sections above its
 // armpit cut the raised arm lengthwise and show a lobe beside the trunk
 // all the way up the arm, so the notch is not climbed there. Climbed, the
