@@ -230,9 +230,9 @@ TEST(ParametricLandmarks, TPose) {
 
 // A T-posed arm reaching past the booth's view: beyond it the cleaned cloud
 // keeps a thin trail of grazing and stray returns (0-5 % of the points per
-// mm of the arm's middle), and on body 1001 one side's trail held enough
-// stray normals to pass as a hand, the wrist read 102 mm up the forearm at
-// the edge of the view. The
+// mm of the arm's middle). On body 1001, judged at the trail's end, one
+// side's stray normals pass as a hand and its wrist lands 102 mm up the
+// forearm at the edge of the view. The
 // end is judged where the arm is still seen in full: each wrist is missing
 // with the reason, or where the truth is.
 TEST(ParametricLandmarks, TPosedArmsGrazedPastTheViewAreNotReadAsHands) {
@@ -712,9 +712,9 @@ TEST(MakeHumanLandmarks, ArmpitAboveArmsRestingOnTheBody) {
 // An obese body whose upper arms rest on the trunk well below the armpits
 // (MakeHuman full seed 2030, arms at 30 deg, the default booth): the crease
 // between arm and trunk weakens for 15 mm (the notch's ratio 0.72-0.74,
-// just past its 0.7) and comes back up to the true armpit. Stopping at the
-// weak stretch put both armpits 32-47 mm low, and the chest girth's
-// section, taken there, took in the arms (+114 mm).
+// just past its 0.7) and comes back up to the true armpit. A climb that
+// stops at the weak stretch leaves both armpits 32-47 mm low, and the chest
+// girth's section there takes in the arms.
 TEST(MakeHumanLandmarks, RestingArmsCreaseClimbsPastAWeakStretch) {
   BESPOKE_REQUIRE_SHARED(shared);
   MakeHumanModel model(shared / "data/bodies/makehuman");
