@@ -13,13 +13,28 @@ namespace bespoke::landmarks {
 namespace {
 
 // Heights as shares of the crotch height, where the scan shows no shape
-// cue: the leg's width changes smoothly at the malleoli (about 0.09-0.10)
-// and round the knee. The knee's first estimate: knee (mid-patella) height
+// cue: the leg's width changes smoothly at the malleoli and round the
+// knee. The knee's first estimate: knee (mid-patella) height
 // about 0.285 and crotch height about 0.47 of stature (ISO 7250-1 style
 // survey data) give 0.61; the MakeHuman bodies' knees sit lower (0.58), the
 // parametric body's at 0.62, so 0.595 between them (KneeLevel refines it).
 constexpr double kKneeShare = 0.595;
+// The ankle's level, which the calf's band and the ankle's centre (the
+// leg's section 40 mm above it) hang from.
 constexpr double kAnkleShare = 0.095;
+// The malleoli's own heights, as shares of the crotch height. The medial
+// malleolus sits higher than the lateral one, whose tip reaches further
+// down. The oracle's two body models place them by different conventions
+// (MakeHuman: both at the ankle joint's height, inside 0.077 and outside
+// 0.079 of the crotch height; the parametric body: inside 0.105, outside
+// 0.088), and neither scan shows a bump to find, so each share is set
+// between the two.
+constexpr double kAnkleInsideShare = 0.091;
+constexpr double kAnkleOutsideShare = 0.083;
+// Half the height of the band an ankle point is sought in, mm: the leg
+// widens towards the foot, so the most medial (lateral) point of a wider
+// band lies at its bottom.
+constexpr double kAnkleBandMm = 4;
 
 // The knee's level is sought this far either side of the estimate, mm.
 constexpr double kKneeSearchMm = 50;
@@ -281,16 +296,19 @@ void FindLeg(Context* c, int sign) {
   } else {
     ay /= n;
     auto near_axis = [&](const Eigen::Vector3d& p) { return std::abs(p.y() - ay) < 30; };
-    const int in = BestNear(*c, leg, ankle_z, 12, near_axis, Eigen::Vector3d(-sign, 0, 0));
-    const int out = BestNear(*c, leg, ankle_z, 12, near_axis, Eigen::Vector3d(sign, 0, 0));
-    if (in >= 0)
-      c->Put("ankle_inside" + side, c->P(in), 0.6, "proportion_section_inside");
-    else
-      c->Missing("ankle_inside" + side, "no points at the inner ankle");
-    if (out >= 0)
-      c->Put("ankle_outside" + side, c->P(out), 0.6, "proportion_section_outside");
-    else
-      c->Missing("ankle_outside" + side, "no points at the outer ankle");
+    for (const bool inside : {true, false}) {
+      const double z = (inside ? kAnkleInsideShare : kAnkleOutsideShare) * c->crotch_z;
+      const Eigen::Vector3d direction(inside ? -sign : sign, 0, 0);
+      const int best = BestNear(*c, leg, z, kAnkleBandMm, near_axis, direction);
+      const std::string name = (inside ? "ankle_inside" : "ankle_outside") + side;
+      if (best < 0) {
+        c->Missing(name, inside ? "no points at the inner ankle" : "no points at the outer ankle");
+        continue;
+      }
+      Eigen::Vector3d p = c->P(best);
+      p.z() = z;
+      c->Put(name, p, 0.6, inside ? "proportion_section_inside" : "proportion_section_outside");
+    }
   }
   // Calf: the level of the leg's largest girth (CalfLevel), the back of the
   // leg there.
