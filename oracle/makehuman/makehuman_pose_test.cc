@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <vector>
 
 #include "measure/catalogue/catalogue.h"
 #include "oracle/makehuman/makehuman_body.h"
@@ -304,6 +305,30 @@ TEST(DefinedLandmarks, TheWaistIsTheNarrowestSectionAndMovesWithTheBelly) {
   // Calf: the calf point is at its level.
   const double calf = belly.parameters.at("level.calf_right_mm");
   EXPECT_NEAR(At(belly, "calf_right").z(), calf, 1.5);
+}
+
+// The under-bust goes just below the breasts. On these full-range bodies
+// (arms 30 deg) the fold read on the bust points' verticals lies on the
+// breasts' lower part: seed 2028's breasts hang inwards, their lowest
+// point 4-5 mm below the fold found on those verticals; seed 1003's
+// underside slopes down to the chest wall. There the girth was 65 and 37 mm
+// over the section's 5 mm lower (827.5 / 762.5, 950.1 / 913.0 mm). At the
+// level the girth must not
+// rise over the 5 mm below it more than 10 mm (2 mm per mm) faster than
+// over the 5 mm below those, which the chest wall's own widening does not
+// reach.
+TEST(DefinedLandmarks, TheUnderBustIsJustBelowTheBreasts) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(MakeHumanDir(shared));
+  for (std::uint64_t seed : {2028, 1003}) {
+    const Body body = Posed(&model, seed, "arms-30", "full");
+    const double z = body.parameters.at("level.under_bust_mm");
+    const double g0 = TrunkGirthAt(body, z), g5 = TrunkGirthAt(body, z - 5),
+                 g10 = TrunkGirthAt(body, z - 10);
+    std::printf("seed %d: under-bust %.1f mm, girths %.1f / %.1f / %.1f mm at 0 / -5 / -10 mm\n",
+                static_cast<int>(seed), z, g0, g5, g10);
+    EXPECT_LE(g0 - g5, g5 - g10 + 10) << "seed " << seed << " (mm)";
+  }
 }
 
 // A leg's hull perimeter at height z (the loop nearest the point).

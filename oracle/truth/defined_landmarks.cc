@@ -108,11 +108,44 @@ double SectionGirth(const std::vector<SectionLoop>& section) {
 // scan.
 constexpr double kFoldHalfSpanMm = 10, kFoldTop = 0.01, kFoldBottom = 0.08;
 constexpr double kNoFoldBendMm = 1, kFoldBendMm = 3, kNoFoldDrop = 0.04, kFoldStrengthHalfMm = 5;
+// A breast's lower part below the fold's level (a step of the truth's own:
+// the detector does not take it, docs/landmarks.md step 5): the girth's
+// rise per mm of height over the kUndersideRunMm above a level, and the
+// chest wall's over 10-20 mm below it; the level is on the breast while the
+// first passes the second by more than kUndersideExcess (mm of girth per mm),
+// and follows it down at most kUndersideMaxDropMm. On the two bodies of
+// DefinedLandmarks.TheUnderBustIsJustBelowTheBreasts the breasts' lower edge
+// rises 6-16 mm per mm, and the chest wall's rate (1 and 3) changes by less
+// than 1 over the 30 mm below it.
+constexpr double kUndersideRunMm = 2, kUndersideExcess = 2, kUndersideMaxDropMm = 40;
 
 // The fold's weight (0-1) in the under-bust's level for a fold of strength
 // strength_mm.
 double FoldWeight(double strength_mm) {
   return std::clamp((strength_mm - kNoFoldBendMm) / (kFoldBendMm - kNoFoldBendMm), 0.0, 1.0);
+}
+
+// The level from `level_mm` down to just below the breasts: a breast whose
+// lower part hangs below the fold's level on the bust points' verticals
+// (it hangs inwards, or its underside slopes down to the chest wall) is
+// still in that section, where the girth rises many times faster with height
+// than along the chest wall (kUndersideExcess). The level moves down in
+// 0.5 mm steps while it does.
+double BelowTheBreasts(const TriangleMesh& mesh, double level_mm) {
+  std::map<long long, double> girths;
+  const auto girth = [&](double z) {
+    const auto [it, fresh] = girths.try_emplace(std::llround(z * 1000), 0.0);
+    if (fresh) it->second = SectionGirth(TrunkSection(mesh, z));
+    return it->second;
+  };
+  for (double drop = 0; drop < kUndersideMaxDropMm; drop += 0.5, level_mm -= 0.5) {
+    const double rise = (girth(level_mm) - girth(level_mm - kUndersideRunMm)) / kUndersideRunMm;
+    // A belly below that narrows upwards is no chest wall: its rate counts
+    // as a vertical wall's (0).
+    const double wall = std::max(0.0, (girth(level_mm - 10) - girth(level_mm - 20)) / 10);
+    if (rise <= wall + kUndersideExcess) break;
+  }
+  return level_mm;
 }
 
 // The z in [lo, hi] maximising score(z): a scan in `step` steps, then one
@@ -267,6 +300,7 @@ DefinedLevels PlaceDefinedLandmarks(const DefinedLandmarkOptions& options,
   // can still be in the section; the tape goes just below it.
   for (int k = 0; k < 120 && TrunkSection(mesh, levels.under_bust_mm).size() > 1; ++k)
     levels.under_bust_mm -= 0.5;
+  levels.under_bust_mm = BelowTheBreasts(mesh, levels.under_bust_mm);
   Place(body, "under_bust", FrontAt(TrunkSection(mesh, levels.under_bust_mm), 0));
   const double crotch = At(*body, "crotch").z(), under_bust = levels.under_bust_mm;
   // Hip: the section reaching furthest back, from just above the crotch to

@@ -20,8 +20,13 @@
 //     threshold where a bend read a little differently jumps the level); the
 //     point on x = 0 at that level. A hanging breast's underside is that
 //     bend; where the breast is a loop of its own there, the level moves
-//     down (0.5 mm steps, at most 60 mm) until the section is free of it:
-//     the tape goes just below the breasts.
+//     down (0.5 mm steps, at most 60 mm) until the section is free of it.
+//     A breast that hangs inwards, or whose underside slopes down to the
+//     chest wall, reaches below that fold: the level moves down (0.5 mm
+//     steps, at most 40 mm) while the girth rises over the 2 mm above it
+//     more than 2 mm per mm faster than over 10-20 mm below it (taken as 0
+//     where a belly there narrows upwards). The tape goes just below the
+//     breasts.
 //   hip (hip_back, hip_right, hip_left): the level of the most prominent
 //     buttock (the trunk section reaching furthest back, -y) between 20 mm
 //     above the crotch and halfway up to the under-bust; hip_back the
