@@ -331,6 +331,41 @@ TEST(DefinedLandmarks, TheUnderBustIsJustBelowTheBreasts) {
   }
 }
 
+// The crotch is the bottom of the mid-sagittal seam's U. That bottom is
+// flat over 60-90 mm front to back on many bodies, and its lowest vertex
+// flips between a front and a back dip a few mm apart in height. The
+// vertex of a parabola through the U's bottom stays near its middle: over
+// these eight bodies its front-to-back spread is under half the lowest
+// vertex's, and it lies within 8 mm above that vertex.
+TEST(DefinedLandmarks, TheCrotchIsTheBottomOfTheSeamsU) {
+  BESPOKE_REQUIRE_SHARED(shared);
+  MakeHumanModel model(MakeHumanDir(shared));
+  std::vector<int> seam;
+  const Eigen::MatrixX3d& base = model.base_body().vertices;
+  for (Eigen::Index v = 0; v < base.rows(); ++v)
+    if (std::abs(base(v, 0)) < 1e-5) seam.push_back(static_cast<int>(v));
+  std::vector<double> crotch_y, lowest_y;
+  for (std::uint64_t seed = 1001; seed <= 1008; ++seed) {
+    const Body body = Posed(&model, seed, "arms-30", "full");
+    const Eigen::Vector3d crotch = At(body, "crotch");
+    int lowest = seam.front();
+    for (int v : seam)
+      if (body.mesh.vertices(v, 2) < body.mesh.vertices(lowest, 2)) lowest = v;
+    const Eigen::Vector3d low = body.mesh.vertices.row(lowest).transpose();
+    std::printf("seed %d: crotch y %.1f z %.1f mm; lowest seam vertex y %.1f z %.1f mm\n",
+                static_cast<int>(seed), crotch.y(), crotch.z(), low.y(), low.z());
+    EXPECT_GE(crotch.z(), low.z() - 0.5) << seed;
+    EXPECT_LE(crotch.z(), low.z() + 8) << seed;
+    crotch_y.push_back(crotch.y()), lowest_y.push_back(low.y());
+  }
+  const auto spread = [](const std::vector<double>& v) {
+    return *std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end());
+  };
+  std::printf("front-to-back spread: crotch %.1f mm, lowest vertex %.1f mm\n", spread(crotch_y),
+              spread(lowest_y));
+  EXPECT_LT(spread(crotch_y), 0.5 * spread(lowest_y));
+}
+
 // A leg's hull perimeter at height z (the loop nearest the point).
 double LegGirthAt(const Body& body, double z, const Eigen::Vector3d& near) {
   return HullGirthAt(body, z, near, false);

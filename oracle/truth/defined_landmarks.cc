@@ -118,6 +118,9 @@ constexpr double kNoFoldBendMm = 1, kFoldBendMm = 3, kNoFoldDrop = 0.04, kFoldSt
 // rises 6-16 mm per mm, and the chest wall's rate (1 and 3) changes by less
 // than 1 over the 30 mm below it.
 constexpr double kUndersideRunMm = 2, kUndersideExcess = 2, kUndersideMaxDropMm = 40;
+// The crotch's U: the part within this height of its lowest point that the
+// parabola is fitted to, mm (the detector's).
+constexpr double kCrotchBottomMm = 25;
 
 // The fold's weight (0-1) in the under-bust's level for a fold of strength
 // strength_mm.
@@ -146,6 +149,50 @@ double BelowTheBreasts(const TriangleMesh& mesh, double level_mm) {
     if (rise <= wall + kUndersideExcess) break;
   }
   return level_mm;
+}
+
+// The crotch on the mid-sagittal seam's vertices `seam` below `below_mm`:
+// the seam there is a U (rising to the pubis in front and the buttocks
+// behind) whose bottom is flat over 60-90 mm on many bodies, and its lowest
+// vertex flips between a front and a back dip a few mm apart in height. The
+// lowest point is the vertex of a least-squares parabola z(y) through the
+// U's bottom kCrotchBottomMm, the U sampled every mm of y between its
+// vertices (the detector's rule, measure/landmarks/landmark_trunk.cc), at
+// the U's height there. The lowest vertex where the bottom holds fewer
+// than three samples or does not curve up.
+Eigen::Vector3d SeamCrotch(const TriangleMesh& mesh, const std::vector<int>& seam,
+                           double below_mm) {
+  std::vector<Eigen::Vector2d> u;  // (y, z), sorted by y
+  for (const int v : seam)
+    if (mesh.vertices(v, 2) < below_mm) u.emplace_back(mesh.vertices(v, 1), mesh.vertices(v, 2));
+  if (u.empty()) throw InputError("defined landmarks: no seam vertex below the hip level");
+  std::sort(u.begin(), u.end(), [](const auto& a, const auto& b) { return a.x() < b.x(); });
+  const auto lowest = std::min_element(u.begin(), u.end(),
+                                       [](const auto& a, const auto& b) { return a.y() < b.y(); });
+  const auto height = [&u](double y) {  // the U's height at y (linear between vertices)
+    const auto hi = std::lower_bound(u.begin(), u.end(), y,
+                                     [](const Eigen::Vector2d& p, double v) { return p.x() < v; });
+    if (hi == u.begin()) return hi->y();
+    if (hi == u.end()) return u.back().y();
+    const auto lo = hi - 1;
+    return hi->x() == lo->x() ? lo->y()
+                              : lo->y() + (y - lo->x()) / (hi->x() - lo->x()) * (hi->y() - lo->y());
+  };
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d atb = Eigen::Vector3d::Zero();
+  double y_lo = std::numeric_limits<double>::infinity(), y_hi = -y_lo;
+  int n = 0;
+  for (double y = std::ceil(u.front().x()); y <= u.back().x(); y += 1) {
+    const double z = height(y);
+    if (z > lowest->y() + kCrotchBottomMm) continue;
+    const Eigen::Vector3d a(1, y, y * y);
+    ata += a * a.transpose(), atb += a * z, ++n;
+    y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
+  }
+  const Eigen::Vector3d k = ata.ldlt().solve(atb);
+  if (n < 3 || !(k(2) > 1e-5)) return {0, lowest->x(), lowest->y()};
+  const double y = std::clamp(-k(1) / (2 * k(2)), y_lo, y_hi);
+  return {0, y, height(y)};
 }
 
 // The z in [lo, hi] maximising score(z): a scan in `step` steps, then one
@@ -323,13 +370,7 @@ DefinedLevels PlaceDefinedLandmarks(const DefinedLandmarkOptions& options,
   Place(body, "side_waist_left", Extreme(waist, 0, -1));
   levels.middle_hip_mm = 0.5 * (levels.hip_mm + levels.waist_mm);
   Place(body, "middle_hip_front", FrontAt(TrunkSection(mesh, levels.middle_hip_mm), 0));
-  // Crotch: the lowest seam vertex below the hip level.
-  int lowest = -1;
-  for (const int v : seam)
-    if (mesh.vertices(v, 2) < levels.hip_mm &&
-        (lowest < 0 || mesh.vertices(v, 2) < mesh.vertices(lowest, 2)))
-      lowest = v;
-  if (lowest >= 0) Place(body, "crotch", mesh.vertices.row(lowest).transpose());
+  if (!seam.empty()) Place(body, "crotch", SeamCrotch(mesh, seam, levels.hip_mm));
   for (const char* side : {"right", "left"})
     Place(body, std::string("upper_arm_") + side, UpperArmPoint(*body, side));
   // Calves: the largest leg girth between ankle and knee that lies below a

@@ -40,7 +40,10 @@
 //   middle_hip_front: the front of the trunk section on x = 0 midway between
 //     the hip and waist levels.
 //   crotch: the lowest point of the trunk's mid-sagittal line, the seam
-//     vertices the caller names (`seam`), below the hip level.
+//     vertices the caller names (`seam`), below the hip level: a U whose
+//     bottom is often flat over 60-90 mm, so its lowest vertex flips
+//     between a front and a back dip. The vertex of a parabola z(y) through
+//     the U's bottom 25 mm (the detector's rule), at the U's height there.
 //   calf_*: the back of the leg at the level of its largest girth between
 //     the ankle and the knee datum points (25-90 % of the way up) that has
 //     a section 3 mm of girth smaller above it in that band (the calf's
