@@ -42,6 +42,25 @@ Band BandOf(const Eigen::MatrixX3d& cloud, const Eigen::MatrixX3d& normals,
   return band;
 }
 
+// A limb's section between its ankle and calf changes by less than half
+// over the band (ankle girth over calf girth is about 0.6): a level whose
+// girth is under kSliverShare of the band's median is a sliver the anchor
+// picked where a sparse scan left only a few points of the loop (a run of
+// them outlasts the median window).
+constexpr double kSliverShare = 0.5;
+
+// `z` and `girth` (#L each) without the levels whose girth is a sliver's.
+void DropSlivers(std::vector<double>* z, std::vector<double>* girth) {
+  if (girth->empty()) return;
+  std::vector<double> sorted = *girth;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double floor = kSliverShare * sorted[sorted.size() / 2];
+  size_t kept = 0;
+  for (size_t i = 0; i < girth->size(); ++i)
+    if ((*girth)[i] >= floor) (*z)[kept] = (*z)[i], (*girth)[kept] = (*girth)[i], ++kept;
+  z->resize(kept), girth->resize(kept);
+}
+
 }  // namespace
 
 double NarrowestSectionZ(const SectionGirthOptions& options, const Eigen::MatrixX3d& cloud,
@@ -52,7 +71,7 @@ double NarrowestSectionZ(const SectionGirthOptions& options, const Eigen::Matrix
   // No slab is thicker than the widest one.
   const double margin = std::max(options.half_thickness_mm, options.max_half_thickness_mm) + 1;
   const Band band = BandOf(cloud, normals, members, z_from - margin, z_to + margin);
-  std::vector<double> z, girth;
+  std::vector<double> z, girth, closed_z, closed_girth;
   Eigen::MatrixX3d at = anchors;
   for (double level = z_from; level <= z_to; level += step_mm) {
     at.col(2).setConstant(level);
@@ -61,7 +80,12 @@ double NarrowestSectionZ(const SectionGirthOptions& options, const Eigen::Matrix
                             Eigen::Vector3d::UnitZ(), at, band.members);
     if (s.points == 0) continue;
     z.push_back(level), girth.push_back(s.girth_mm);
+    if (!s.open) closed_z.push_back(level), closed_girth.push_back(s.girth_mm);
   }
+  // An open section's hull spans only the arc the scan saw: where enough
+  // levels close their loop, only those are compared.
+  if (closed_z.size() >= 2 * static_cast<size_t>(window)) z = closed_z, girth = closed_girth;
+  DropSlivers(&z, &girth);
   const int n = static_cast<int>(z.size()), half = window / 2;
   double best = std::numeric_limits<double>::infinity(), best_z = z_from;
   for (int i = half; i + half < n; ++i) {

@@ -17,7 +17,11 @@ namespace bespoke {
 // part's girth every step_mm (each with the anchors moved to that height),
 // the median of `window` neighbouring levels so that one noisy or broken
 // section (a sliver the anchor picks between two holes) does not decide,
-// and the level of the smallest median. z_from when no level cuts the cloud
+// and the level of the smallest median. Levels whose girth is under half
+// the band's median are slivers too and left out first: on a sparse scan a
+// run of them can outlast the window. Where at least 2 `window` levels
+// close their loop, open sections (a hull of the arc the scan saw) are
+// left out too. z_from when no level cuts the cloud
 // or z_to <= z_from. Arguments as MeasureSectionGirth (members.one_part is
 // not used: each level's part is the seed's loop with its arcs).
 double NarrowestSectionZ(const SectionGirthOptions& options, const Eigen::MatrixX3d& cloud,

@@ -447,5 +447,49 @@ TEST(SectionGirth, NarrowestSectionOfAShank) {
             50);
 }
 
+// The same shank where a sparse scan saw only a short arc of the loop,
+// by the anchor, over 14 mm of height (z = 60-72): those levels' part is a
+// sliver whose hull is a fraction of the loop's, and a run of them longer
+// than the median window was taken for the narrowest section.
+TEST(SectionGirth, NarrowestSectionIgnoresARunOfSlivers) {
+  std::vector<Eigen::Vector3d> cloud;
+  for (double z = 0; z <= 300; z += 2) {
+    const double r = 40 + 0.004 * (z - 120) * (z - 120);
+    const bool sliver = z >= 60 && z <= 72;
+    for (int k = 0; k < 150; ++k) {
+      const double t = 2 * kPi * k / 150;
+      if (sliver && std::abs(std::remainder(t, 2 * kPi)) > 0.3) continue;
+      cloud.emplace_back(r * std::cos(t), r * std::sin(t), z);
+    }
+  }
+  Eigen::MatrixX3d anchor(1, 3);
+  anchor << 45, 0, 20;
+  const double z = NarrowestSectionZ(SectionGirthOptions{}, ToMatrix(cloud), Eigen::MatrixX3d(0, 3),
+                                     20, 280, 2, 5, anchor);
+  EXPECT_NEAR(z, 120, 6) << "mm";
+}
+
+// The same shank where a scan saw only the front half of the loop just
+// below its narrowest level (z = 100-116): those sections are open, and the
+// hull of a half loop is 0.82 of the loop's, smaller than the true minimum.
+// Where enough levels close their loop only those are compared.
+TEST(SectionGirth, NarrowestSectionPrefersClosedLoops) {
+  std::vector<Eigen::Vector3d> cloud;
+  for (double z = 0; z <= 300; z += 2) {
+    const double r = 40 + 0.004 * (z - 120) * (z - 120);
+    const bool half = z >= 100 && z <= 116;
+    for (int k = 0; k < 150; ++k) {
+      const double t = 2 * kPi * k / 150;
+      if (half && std::sin(t) < 0) continue;
+      cloud.emplace_back(r * std::cos(t), r * std::sin(t), z);
+    }
+  }
+  Eigen::MatrixX3d anchor(1, 3);
+  anchor << 45, 0, 80;
+  const double z = NarrowestSectionZ(SectionGirthOptions{}, ToMatrix(cloud), Eigen::MatrixX3d(0, 3),
+                                     80, 160, 2, 5, anchor);
+  EXPECT_NEAR(z, 120, 6) << "mm";
+}
+
 }  // namespace
 }  // namespace bespoke
