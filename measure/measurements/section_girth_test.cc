@@ -447,26 +447,39 @@ TEST(SectionGirth, NarrowestSectionOfAShank) {
             50);
 }
 
+// The shank of NarrowestSectionOfAShank without noise (radius 40 + 0.004
+// (z - 120)^2 mm, rings 2 mm apart of 150 points), less the points at
+// height z and angle t (rad) that `drop` names.
+std::vector<Eigen::Vector3d> Shank(const std::function<bool(double, double)>& drop) {
+  std::vector<Eigen::Vector3d> cloud;
+  for (double z = 0; z <= 300; z += 2) {
+    const double r = 40 + 0.004 * (z - 120) * (z - 120);
+    for (int k = 0; k < 150; ++k) {
+      const double t = 2 * kPi * k / 150;
+      if (!drop(z, t)) cloud.emplace_back(r * std::cos(t), r * std::sin(t), z);
+    }
+  }
+  return cloud;
+}
+
+// The narrowest level (mm) of `cloud` between `from` and `to`, anchored on
+// the shank's side, 2 mm steps, a 5-level window.
+double NarrowestOfShank(const std::vector<Eigen::Vector3d>& cloud, double from, double to) {
+  Eigen::MatrixX3d anchor(1, 3);
+  anchor << 45, 0, from;
+  return NarrowestSectionZ(SectionGirthOptions{}, ToMatrix(cloud), Eigen::MatrixX3d(0, 3), from, to,
+                           2, 5, anchor);
+}
+
 // The same shank where a sparse scan saw only a short arc of the loop,
 // by the anchor, over 14 mm of height (z = 60-72): those levels' part is a
 // sliver whose hull is a fraction of the loop's, and a run of them longer
 // than the median window was taken for the narrowest section.
 TEST(SectionGirth, NarrowestSectionIgnoresARunOfSlivers) {
-  std::vector<Eigen::Vector3d> cloud;
-  for (double z = 0; z <= 300; z += 2) {
-    const double r = 40 + 0.004 * (z - 120) * (z - 120);
-    const bool sliver = z >= 60 && z <= 72;
-    for (int k = 0; k < 150; ++k) {
-      const double t = 2 * kPi * k / 150;
-      if (sliver && std::abs(std::remainder(t, 2 * kPi)) > 0.3) continue;
-      cloud.emplace_back(r * std::cos(t), r * std::sin(t), z);
-    }
-  }
-  Eigen::MatrixX3d anchor(1, 3);
-  anchor << 45, 0, 20;
-  const double z = NarrowestSectionZ(SectionGirthOptions{}, ToMatrix(cloud), Eigen::MatrixX3d(0, 3),
-                                     20, 280, 2, 5, anchor);
-  EXPECT_NEAR(z, 120, 6) << "mm";
+  const std::vector<Eigen::Vector3d> cloud = Shank([](double z, double t) {
+    return z >= 60 && z <= 72 && std::abs(std::remainder(t, 2 * kPi)) > 0.3;
+  });
+  EXPECT_NEAR(NarrowestOfShank(cloud, 20, 280), 120, 6) << "mm";
 }
 
 // The same shank where a scan saw only the front half of the loop just
@@ -474,21 +487,9 @@ TEST(SectionGirth, NarrowestSectionIgnoresARunOfSlivers) {
 // hull of a half loop is 0.82 of the loop's, smaller than the true minimum.
 // Where enough levels close their loop only those are compared.
 TEST(SectionGirth, NarrowestSectionPrefersClosedLoops) {
-  std::vector<Eigen::Vector3d> cloud;
-  for (double z = 0; z <= 300; z += 2) {
-    const double r = 40 + 0.004 * (z - 120) * (z - 120);
-    const bool half = z >= 100 && z <= 116;
-    for (int k = 0; k < 150; ++k) {
-      const double t = 2 * kPi * k / 150;
-      if (half && std::sin(t) < 0) continue;
-      cloud.emplace_back(r * std::cos(t), r * std::sin(t), z);
-    }
-  }
-  Eigen::MatrixX3d anchor(1, 3);
-  anchor << 45, 0, 80;
-  const double z = NarrowestSectionZ(SectionGirthOptions{}, ToMatrix(cloud), Eigen::MatrixX3d(0, 3),
-                                     80, 160, 2, 5, anchor);
-  EXPECT_NEAR(z, 120, 6) << "mm";
+  const std::vector<Eigen::Vector3d> cloud =
+      Shank([](double z, double t) { return z >= 100 && z <= 116 && std::sin(t) < 0; });
+  EXPECT_NEAR(NarrowestOfShank(cloud, 80, 160), 120, 6) << "mm";
 }
 
 }  // namespace
