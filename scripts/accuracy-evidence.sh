@@ -99,9 +99,11 @@ tmp=$(mktemp)
   echo
   echo "| length | A-pose | T-pose | T - A | truth A | truth T | verdict |"
   echo "| --- | --- | --- | --- | --- | --- | --- |"
-  awk -F, "$columns"'NR > 1 && $c["judged"] == 1 { printf "| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %s |\n",
-    $1, $c["measured_a_mm"], $c["measured_b_mm"], $c["difference_mm"], $c["truth_a_mm"],
-    $c["truth_b_mm"], $c["pass"] }' "$out/found/posture.csv"
+  # An empty cell (a pose that gave no value) reads "missing", not 0.00.
+  awk -F, "$columns"'function mm(v) { return v == "" ? "missing" : sprintf("%.2f", v) }
+    NR > 1 && $c["judged"] == 1 { printf "| %s | %s | %s | %s | %s | %s | %s |\n",
+    $1, mm($c["measured_a_mm"]), mm($c["measured_b_mm"]), mm($c["difference_mm"]),
+    mm($c["truth_a_mm"]), mm($c["truth_b_mm"]), $c["pass"] }' "$out/found/posture.csv"
 } > "$tmp"
 mkdir -p "$(dirname "$doc")"
 mv "$tmp" "$doc"
