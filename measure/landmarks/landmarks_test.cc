@@ -646,8 +646,8 @@ TEST(ParametricLandmarks, UnderBustFollowsAFoldThatSharpens) {
 // The malleoli: no bump on either body model's scan marks them, so each
 // is placed at its own share of the crotch height, the inner one higher.
 // The leg widens towards the foot, and the most medial point of a band 24 mm
-// high lay at the band's bottom: the inner ankle came out 18.6 mm low
-// (median) on the parametric full-range set of seed 1. Bodies of seeds not
+// high lies at the band's bottom: taken there, the inner ankle is 18.6 mm
+// low (median) on the parametric full-range set of seed 1. Bodies of seeds not
 // looked at while choosing the shares: the median height error of the four
 // ankle points within 15 mm, none beyond 25 mm, on both body models.
 void ExpectAnklesAtTheirLevels(const std::vector<testing::ScannedBody>& scans) {

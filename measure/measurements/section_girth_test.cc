@@ -473,8 +473,8 @@ double NarrowestOfShank(const std::vector<Eigen::Vector3d>& cloud, double from, 
 
 // The same shank where a sparse scan saw only a short arc of the loop,
 // by the anchor, over 14 mm of height (z = 60-72): those levels' part is a
-// sliver whose hull is a fraction of the loop's, and a run of them longer
-// than the median window was taken for the narrowest section.
+// sliver whose hull is a fraction of the loop's, and the median window
+// alone takes a run of them longer than itself for the narrowest section.
 TEST(SectionGirth, NarrowestSectionIgnoresARunOfSlivers) {
   const std::vector<Eigen::Vector3d> cloud = Shank([](double z, double t) {
     return z >= 60 && z <= 72 && std::abs(std::remainder(t, 2 * kPi)) > 0.3;

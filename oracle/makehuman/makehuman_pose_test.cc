@@ -310,13 +310,12 @@ TEST(DefinedLandmarks, TheWaistIsTheNarrowestSectionAndMovesWithTheBelly) {
 // The under-bust goes just below the breasts. On these full-range bodies
 // (arms 30 deg) the fold read on the bust points' verticals lies on the
 // breasts' lower part: seed 2028's breasts hang inwards, their lowest
-// point 4-5 mm below the fold found on those verticals; seed 1003's
-// underside slopes down to the chest wall. There the girth was 65 and 37 mm
-// over the section's 5 mm lower (827.5 / 762.5, 950.1 / 913.0 mm). At the
-// level the girth must not
-// rise over the 5 mm below it more than 10 mm (2 mm per mm) faster than
-// over the 5 mm below those, which the chest wall's own widening does not
-// reach.
+// point 4-5 mm below that fold; seed 1003's underside slopes down to the
+// chest wall. At that fold the girth is 65 and 37 mm over the section's
+// 5 mm lower (827.5 / 762.5, 950.1 / 913.0 mm). At the level the girth
+// must not rise over the 5 mm below it more than 10 mm (2 mm per mm)
+// faster than over the 5 mm below those, which the chest wall's own
+// widening does not reach.
 TEST(DefinedLandmarks, TheUnderBustIsJustBelowTheBreasts) {
   BESPOKE_REQUIRE_SHARED(shared);
   MakeHumanModel model(MakeHumanDir(shared));
